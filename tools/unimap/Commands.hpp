@@ -1,0 +1,20 @@
+#pragma once
+// Subcommands of the `unimap` command line; each registers itself on the app.
+#include <CLI/CLI.hpp>
+
+namespace unimap::cli {
+
+// `unimap plugins`: the payload plugins found, with versions, paths and defaults.
+void AddPluginsCommand(CLI::App* app);
+// `unimap config --platform FILE`: effective parameters and where each came from.
+void AddConfigCommand(CLI::App* app);
+// `unimap simulate`: writes a simulated dataset for a scenario and payload.
+void AddSimulateCommand(CLI::App* app);
+// `unimap evaluate`: trajectory metrics, plots and report against ground truth.
+void AddEvaluateCommand(CLI::App* app);
+// `unimap convert`: KITTI, CARMEN and ROS 1 bag data into the dataset format.
+void AddConvertCommand(CLI::App* app);
+// `unimap bench`: speed figures written to docs/benchmarks.md.
+void AddBenchCommand(CLI::App* app);
+
+}  // namespace unimap::cli

@@ -1,0 +1,26 @@
+// unimap: real-time 3D mapping from any LiDAR payload (command line).
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "Commands.hpp"
+#include "unimap/Version.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"unimap: real-time 3D mapping from any LiDAR payload (fixed 3D, rotating 3D, rotating 2D)"};
+  app.set_version_flag("--version", std::string("unimap ") + unimap::kSdkVersion);
+  app.require_subcommand(1);
+  unimap::cli::AddPluginsCommand(&app);
+  unimap::cli::AddConfigCommand(&app);
+  unimap::cli::AddSimulateCommand(&app);
+  unimap::cli::AddEvaluateCommand(&app);
+  unimap::cli::AddConvertCommand(&app);
+  unimap::cli::AddBenchCommand(&app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return 0;
+}
