@@ -69,8 +69,8 @@ ResolvedParameters ParameterResolver::Resolve(const PlatformFile& file) const {
       }
       std::string reason = "unknown parameter";
       if (!below.empty()) {
-        reason = "is a group, not a parameter; set its parameters:";
-        for (const std::string& key : below) reason += " " + key;
+        reason = "is a group, not a parameter; its parameters are ";
+        for (std::size_t i = 0; i < below.size(); ++i) reason += (i > 0 ? ", " : "") + below[i];
       } else if (!value_prefix.empty()) {
         reason += "; '" + value_prefix + "' takes a value, not nested keys";
       } else if (const std::string closest = ClosestKey(entry.key); !closest.empty()) {

@@ -135,9 +135,11 @@ LoadedPlugin PluginLoader::Load(const std::string& name_or_path) const {
   // rtld_now: an unresolved symbol fails here, not later in the middle of a run.
   library->load(file, ec, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
   if (ec || !library->is_loaded()) {
-    const char* reason = dlerror();  // Boost.DLL leaves dlopen's message in place on failure
-    throw PluginLoadError("cannot load plugin library " + quoted + ": " +
-                          (reason != nullptr ? std::string(reason) : ec.message()));
+    const char* text = dlerror();  // Boost.DLL leaves dlopen's message in place on failure
+    std::string reason = text != nullptr ? std::string(text) : ec.message();
+    const std::string own_prefix = file.string() + ": ";  // dlerror repeats the path
+    if (StartsWith(reason, own_prefix)) reason.erase(0, own_prefix.size());
+    throw PluginLoadError("cannot load plugin library " + quoted + ": " + reason);
   }
 
   if (!library->has(kAbiSymbol)) {

@@ -29,9 +29,16 @@ struct DatasetMetadata {
   ParameterMap payload_parameters;    // the payload's effective parameters the data was made with
 };
 
-// Reads DIR/metadata.yaml; throws ConfigError naming the file, line and key.
+// Reads DIR/metadata.yaml; throws ConfigError naming the file, line and key
+// (unreadable file, YAML syntax, unknown or duplicate key, wrong type,
+// missing format_version or payload, format_version newer than 1 -- checked
+// before anything else). Omitted optional keys keep the struct's defaults.
 DatasetMetadata LoadDatasetMetadata(const std::filesystem::path& file);
-// Writes metadata atomically (temp file + rename); throws InputError on I/O failure.
+// Writes metadata atomically ("<file>.partial" + rename); every double reads
+// back bit-exactly and every parameter keeps its type. Throws InputError on
+// I/O failure, ConfigError for format_version != 1 or a payload parameter
+// key nested YAML cannot hold (an empty dotted part, or a key that is also
+// the group of another: "a" and "a.b").
 void SaveDatasetMetadata(const DatasetMetadata& metadata, const std::filesystem::path& file);
 
 }  // namespace unimap::io

@@ -16,9 +16,13 @@ namespace unimap::io {
 // One time-stamped item of a dataset.
 using DatasetEvent = std::variant<ImuSample, EncoderSample, OdometrySample, ScanRecord>;
 
-// Streams a dataset folder without holding it in memory. Per-stream readers
-// return std::nullopt at the end of a stream; a malformed or truncated record
-// throws InputError naming the file and the record (line or index).
+// Streams a dataset folder without holding it in memory: buffered reads, at
+// most one decoded item held per stream. A stream whose file is absent is
+// empty; ".partial" files are ignored. Per-stream readers return
+// std::nullopt at the end of a stream; a malformed or truncated record, or
+// time going backwards within a file, throws InputError naming the file and
+// the record ("file:line: ..." for text, "scans.bin: record k (byte o): ..."
+// for scans, k counted from 1).
 class DatasetReader {
  public:
   // Reads metadata.yaml and opens the streams present; throws ConfigError /
@@ -38,7 +42,10 @@ class DatasetReader {
   std::optional<StampedPose> NextGroundTruth();
 
   // All sensor streams merged in time order (scans by their end time; ties:
-  // IMU, encoder, odometry, then scans). Do not mix with the Next* calls.
+  // IMU, encoder, odometry, then scans): a k-way merge holding one look-ahead
+  // per stream. Ground truth is not included. Mixing with the Next* calls is
+  // allowed but rarely useful: a per-stream call first returns the item
+  // NextEvent() holds for that stream.
   std::optional<DatasetEvent> NextEvent();
 
  private:

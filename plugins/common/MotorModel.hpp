@@ -13,7 +13,7 @@ namespace unimap::payload {
 // only in defaults and in the LiDAR on the motor.
 struct MotorModel {
   MotorMount mount;       // T_body_lidar(theta) = T_body_motor * Rot(axis, theta) * T_motor_lidar
-  double rate_rpm = 30.0;  // nominal motor speed (rev/min); informative (simulator), the encoder rules
+  double rate_rpm = 30.0;  // nominal speed (rev/min); informative: the encoder rules
 
   // Adds MotorMount's keys ("extrinsic.body_motor.*", "extrinsic.motor_lidar.*",
   // "motor.axis", "motor.encoder_offset_deg", "motor.encoder_direction") and

@@ -1,5 +1,7 @@
 #include "SpinningLidarModel.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -12,6 +14,8 @@ constexpr const char* kRings = "lidar.rings";
 constexpr const char* kVerticalFov = "lidar.vertical_fov_deg";
 constexpr const char* kSpinRate = "lidar.spin_rate_hz";
 constexpr const char* kClockwise = "lidar.clockwise";
+
+
 }  // namespace
 
 void SpinningLidarModel::AddTo(ParameterSet* set) const {

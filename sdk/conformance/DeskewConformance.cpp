@@ -110,7 +110,7 @@ TEST_P(PayloadConformanceTest, ConfigureIsIdempotent) {
   const ParameterMap defaults = set.DefaultMap();
   std::string why;
 
-  plugin().Configure(defaults);
+  // SetUp configured the fresh plugin with its defaults once.
   const BodyScan once = plugin().Deskew(scan, encoder, motion);
   plugin().Configure(defaults);
   const BodyScan twice = plugin().Deskew(scan, encoder, motion);

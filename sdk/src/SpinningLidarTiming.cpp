@@ -5,6 +5,10 @@
 #include "unimap/Errors.hpp"
 
 namespace unimap {
+namespace {
+// Far below a VLP-16's 3.5e-3 rad between firings.
+constexpr double kRoundingWrapRad = 1e-5;
+}  // namespace
 
 void SpinningLidarTiming::AssignPointTimes(RawScan* scan) const {
   if (scan->points.empty()) throw InputError("scan has no points: cannot derive firing times");
@@ -19,6 +23,10 @@ void SpinningLidarTiming::AssignPointTimes(RawScan* scan) const {
     // Angle the head turned since the first firing, in [0, 2pi).
     double swept = std::fmod(direction * (azimuth - azimuth0), 2.0 * M_PI);
     if (swept < 0.0) swept += 2.0 * M_PI;
+    // Returns of one firing share an azimuth up to rounding (1e-7 rad for
+    // float data): a ring computed just behind the first one is not a whole
+    // revolution later.
+    if (swept > 2.0 * M_PI - kRoundingWrapRad) swept = 0.0;
     point.time_s = scan->start_time_s + period_s * swept / (2.0 * M_PI);
     latest = std::max(latest, point.time_s);
   }

@@ -14,6 +14,8 @@ void AddSimulateCommand(CLI::App* app);
 void AddEvaluateCommand(CLI::App* app);
 // `unimap convert`: KITTI, CARMEN and ROS 1 bag data into the dataset format.
 void AddConvertCommand(CLI::App* app);
+// `unimap run`: localise a dataset (odometry mode) and evaluate it.
+void AddRunCommand(CLI::App* app);
 // `unimap bench`: speed figures written to docs/benchmarks.md.
 void AddBenchCommand(CLI::App* app);
 

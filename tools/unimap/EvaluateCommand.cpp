@@ -1,9 +1,102 @@
-// Placeholder: registers nothing until `unimap evaluate` is implemented
-// (only implemented subcommands are listed).
+// `unimap evaluate`: trajectory metrics, plots and an HTML report against
+// ground truth (definitions in docs/evaluation.md).
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "Commands.hpp"
+#include "TextTable.hpp"
+#include "eval/EvaluationReport.hpp"
+#include "eval/MetricRows.hpp"
+#include "eval/TrajectoryEvaluation.hpp"
+#include "io/TumTrajectory.hpp"
+#include "unimap/Errors.hpp"
 
 namespace unimap::cli {
+namespace {
 
-void AddEvaluateCommand(CLI::App* /*app*/) {}
+struct EvaluateOptions {
+  std::string estimate_file;     // estimated trajectory, TUM
+  std::string truth_file;        // ground truth, TUM
+  std::string out_dir;           // output folder; empty = the estimate's folder
+  double max_time_diff_s = 0.1;  // association tolerance
+  double segment_m = 10.0;       // RPE segment length
+};
+
+// Reads one TUM file; a missing file is an InputError naming it.
+std::vector<StampedPose> ReadTrajectory(const std::string& file, const char* role) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(std::string(role) + " " + file + ": no such file");
+  }
+  return io::ReadTumTrajectory(file);
+}
+
+// Throws InputError unless value is a positive finite number.
+void RequirePositive(const char* option, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(std::string(option) + " must be a positive number (got " + std::to_string(value) + ")");
+  }
+}
+
+int RunEvaluate(const EvaluateOptions& options) {
+  try {
+    RequirePositive("--max-time-diff-s", options.max_time_diff_s);
+    RequirePositive("--segment-m", options.segment_m);
+    const std::vector<StampedPose> estimate = ReadTrajectory(options.estimate_file, "estimate");
+    const std::vector<StampedPose> truth = ReadTrajectory(options.truth_file, "truth");
+    eval::EvaluationOptions eval_options;
+    eval_options.association.max_time_diff_s = options.max_time_diff_s;
+    eval_options.segment_m = options.segment_m;
+    eval::TrajectoryEvaluation evaluation;
+    try {
+      evaluation = eval::EvaluateTrajectory(estimate, truth, eval_options);
+    } catch (const InputError& e) {
+      throw InputError("estimate " + options.estimate_file + " vs truth " + options.truth_file + ": " + e.what());
+    }
+    const std::filesystem::path out_dir =
+        options.out_dir.empty() ? std::filesystem::absolute(options.estimate_file).parent_path()
+                                : std::filesystem::path(options.out_dir);
+
+    std::cout << "estimate: " << options.estimate_file << "  (" << estimate.size() << " poses)\n"
+              << "truth:    " << options.truth_file << "  (" << truth.size() << " poses)\n\n";
+    TextTable table({"metric", "value", "meaning"});
+    for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
+      table.AddRow({row.key, row.value, row.meaning});
+    }
+    table.Print(std::cout);
+    const std::vector<std::filesystem::path> written =
+        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir);
+    std::cout << "\nwrote:\n";
+    for (const auto& file : written) std::cout << "  " << file.string() << '\n';
+    return 0;
+  } catch (const Error& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace
+
+void AddEvaluateCommand(CLI::App* app) {
+  auto options = std::make_shared<EvaluateOptions>();
+  CLI::App* cmd = app->add_subcommand(
+      "evaluate", "Compare an estimated trajectory with ground truth: metrics.json, PNG plots, report.html");
+  cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")
+      ->required();
+  cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM)")->required();
+  cmd->add_option("--out", options->out_dir, "Output folder (default: the estimate's folder)");
+  cmd->add_option("--max-time-diff-s", options->max_time_diff_s,
+                  "Largest time from an estimate pose to each bracketing truth sample")
+      ->capture_default_str();
+  cmd->add_option("--segment-m", options->segment_m, "Travelled distance per RPE segment")
+      ->capture_default_str();
+  cmd->callback([options]() {
+    const int code = RunEvaluate(*options);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
 
 }  // namespace unimap::cli

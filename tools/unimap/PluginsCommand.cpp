@@ -16,7 +16,8 @@ struct PluginsOptions {
 
 void PrintDefaults(const PayloadPlugin& plugin) {
   TextTable table({"key", "symbol", "default", "meaning"});
-  for (const ParameterSpec& spec : plugin.Defaults().specs()) {
+  const ParameterSet defaults = plugin.Defaults();
+  for (const ParameterSpec& spec : defaults.specs()) {
     table.AddRow({spec.key, spec.symbol, ToString(spec.default_value), spec.description});
   }
   table.Print(std::cout, "    ");

@@ -1,9 +1,101 @@
-// Placeholder: registers nothing until `unimap simulate` is implemented
-// (only implemented subcommands are listed).
+// `unimap simulate`: a simulated dataset for a scenario and payload.
+#include <unistd.h>
+
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
 #include "Commands.hpp"
+#include "Scenario.hpp"
+#include "Simulator.hpp"
+#include "unimap/Errors.hpp"
 
 namespace unimap::cli {
+namespace {
 
-void AddSimulateCommand(CLI::App* /*app*/) {}
+struct SimulateOptions {
+  std::string scenario;                 // scenario YAML
+  std::string out;                      // dataset folder
+  std::optional<std::uint64_t> seed;    // replaces the scenario's
+  std::optional<std::string> payload;   // platform file or plugin name
+  std::optional<double> duration_s;     // stop early
+  bool quiet = false;                   // no progress line
+};
+
+std::string Fixed(double value, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+
+void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_file, const std::string& out) {
+  const double rtf = s.wall_s > 0.0 ? s.duration_s / s.wall_s : 0.0;
+  const double return_pct = s.rays > 0 ? 100.0 * static_cast<double>(s.returns) / static_cast<double>(s.rays) : 0.0;
+  std::cout << "scenario   " << s.scenario << "  (" << scenario_file << "), seed " << s.seed << '\n'
+            << "payload    " << s.payload << "  (" << s.payload_source << ")\n"
+            << "world      " << s.world << '\n'
+            << "duration   " << Fixed(s.duration_s, 1) << " s\n"
+            << "path       " << Fixed(s.path_length_m, 1) << " m, max speed " << Fixed(s.max_speed_m_s, 3)
+            << " m/s\n"
+            << "imu        " << s.imu_samples << " samples (and as many ground-truth poses)\n"
+            << "encoder    " << s.encoder_samples << " samples\n"
+            << "scans      " << s.scans << " written";
+  if (s.empty_scans > 0) std::cout << ", " << s.empty_scans << " empty sweeps skipped";
+  std::cout << '\n'
+            << "rays       " << s.rays << " cast, " << s.returns << " returns (" << Fixed(return_pct, 1) << " %)\n"
+            << "output     " << out << "  (" << Fixed(static_cast<double>(s.bytes) / 1e6, 1) << " MB)\n"
+            << "time       " << Fixed(s.wall_s, 2) << " s wall, " << Fixed(s.cpu_s, 2) << " s CPU, real-time factor "
+            << Fixed(rtf, 1) << ", " << Fixed(s.wall_s > 0 ? static_cast<double>(s.rays) / s.wall_s / 1e6 : 0.0, 2)
+            << " M rays/s\n";
+}
+
+int RunSimulate(const SimulateOptions& options) {
+  try {
+    const sim::Scenario scenario = sim::LoadScenario(options.scenario);
+    sim::SimulationOptions run;
+    run.out_dir = options.out;
+    run.seed = options.seed;
+    run.payload = options.payload;
+    run.duration_s = options.duration_s;
+    if (!options.quiet && isatty(STDERR_FILENO)) {
+      run.progress = [](double fraction) {
+        std::fprintf(stderr, "\rsimulating %3d %%", static_cast<int>(100.0 * fraction));
+        if (fraction >= 1.0) std::fprintf(stderr, "\n");
+      };
+    }
+    const sim::SimulationSummary summary = sim::Simulator(scenario, run).Run();
+    PrintSummary(summary, options.scenario, options.out);
+    return 0;
+  } catch (const Error& e) {
+    std::cerr << "\nerror: " << e.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace
+
+void AddSimulateCommand(CLI::App* app) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app->add_subcommand(
+      "simulate", "Write a simulated dataset (IMU, encoder, LiDAR, ground truth, world) for a scenario");
+  cmd->add_option("--scenario", options->scenario, "Scenario YAML (configs/scenarios/*.yaml)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", options->out, "Dataset folder to write (created if needed)")->required();
+  cmd->add_option("--seed", options->seed, "Random seed (default: the scenario's)");
+  cmd->add_option("--payload", options->payload,
+                  "Platform YAML or plugin name (its defaults) instead of the scenario's payload");
+  cmd->add_option("--duration-s", options->duration_s, "Simulate only the first T seconds")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--quiet", options->quiet, "No progress line");
+  cmd->callback([options]() {
+    const int code = RunSimulate(*options);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
 
 }  // namespace unimap::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   unimap::cli::AddConfigCommand(&app);
   unimap::cli::AddSimulateCommand(&app);
   unimap::cli::AddEvaluateCommand(&app);
+  unimap::cli::AddRunCommand(&app);
   unimap::cli::AddConvertCommand(&app);
   unimap::cli::AddBenchCommand(&app);
   try {

@@ -58,8 +58,9 @@ TEST(ParameterResolverTest, ClosestKeyWithinThreeEdits) {
   const ParameterResolver resolver(set);
   EXPECT_EQ(resolver.ClosestKey("cont"), "count");
   EXPECT_EQ(resolver.ClosestKey("mount.ofset_m"), "mount.offset_m");
-  EXPECT_EQ(resolver.ClosestKey("gainxyz"), "");  // 4 edits away from "gain"
-  EXPECT_EQ(resolver.ClosestKey("gainxyz", 4), "gain");
+  EXPECT_EQ(resolver.ClosestKey("gainxyz"), "gain");  // 3 deletions: still suggested
+  EXPECT_EQ(resolver.ClosestKey("gainwxyz"), "");     // 4 away from "gain", farther from the rest
+  EXPECT_EQ(resolver.ClosestKey("gainwxyz", 4), "gain");
 }
 
 TEST(ParameterResolverTest, DefaultsOverriddenWithProvenance) {
@@ -105,7 +106,7 @@ TEST(ParameterResolverTest, GroupNameAndNestedValueAreExplained) {
   const ConfigError group = ResolveError("  mount: 3\n");
   EXPECT_EQ(group.key(), "mount");
   EXPECT_TRUE(Contains(group.reason(), "is a group"));
-  EXPECT_TRUE(Contains(group.reason(), "mount.offset_m mount.side"));
+  EXPECT_TRUE(Contains(group.reason(), "its parameters are mount.offset_m, mount.side"));
 
   const ConfigError nested = ResolveError("  gain:\n    low: 1\n");
   EXPECT_EQ(nested.key(), "gain.low");

@@ -89,6 +89,21 @@ TEST_F(Fixed3dPluginTest, DerivesClockwiseFiringTimesFromAzimuth) {
   }
 }
 
+TEST_F(Fixed3dPluginTest, Float32CoordinatesKeepEveryRingInItsFiring) {
+  // Readers of PCD / KITTI files deliver float32 coordinates: the rings of one
+  // block then differ in azimuth by ~1e-7 rad, which must not read as a whole
+  // revolution (0.1 s) later.
+  Sweep sweep = MakeSweep(50.0, 77.0 * kDeg, /*clockwise=*/true);
+  for (Point& p : sweep.scan.points) p.position_m = p.position_m.cast<float>().cast<double>();
+  const BodyScan out = plugin().Deskew(sweep.scan, EncoderTrack(), plugin_test::StaticBody());
+  ASSERT_EQ(out.points.size(), sweep.scan.points.size());
+  EXPECT_NEAR(out.reference_time_s, sweep.true_time_s.back(), 1e-8);
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    // float32 azimuth error / (2 pi 10 Hz): well under 1e-8 s.
+    ASSERT_NEAR(out.points[i].time_s, sweep.true_time_s[i], 1e-8) << "point " << i;
+  }
+}
+
 TEST_F(Fixed3dPluginTest, DerivesCounterClockwiseFiringTimesWhenConfigured) {
   plugin_test::ConfigureWith(&plugin(), {{"lidar.clockwise", false}, {"lidar.spin_rate_hz", 10.0}});
   const Sweep sweep = MakeSweep(5.0, -10.0 * kDeg, /*clockwise=*/false);

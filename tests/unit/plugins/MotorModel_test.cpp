@@ -72,7 +72,7 @@ TEST_P(MotorModelTest, DefaultScanPlaneContainsTheVerticalMotorAxis) {
 
 INSTANTIATE_TEST_SUITE_P(MotorPayloads, MotorModelTest,
                          ::testing::Values("rotating_3d", "rotating_2d"),
-                         [](const auto& info) { return info.param; });
+                         plugin_test::PayloadTestName);
 
 }  // namespace
 }  // namespace unimap

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "unimap/Deskew.hpp"
 #include "unimap/EncoderTrack.hpp"
@@ -24,6 +25,11 @@ constexpr double kDeg = kPi / 180.0;
 inline const std::vector<std::string>& PayloadNames() {
   static const std::vector<std::string> names = {"fixed_3d", "rotating_3d", "rotating_2d"};
   return names;
+}
+
+// Test name suffix for a test parameterised over payload names.
+inline std::string PayloadTestName(const ::testing::TestParamInfo<std::string>& param) {
+  return param.param;
 }
 
 // Loads an in-tree plugin from the build tree's plugin folder only.
@@ -97,7 +103,9 @@ struct MountTruth {
 
   // The platform keys that configure a plugin with this mount.
   std::map<std::string, ParameterValue> Overrides() const {
-    const auto list = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
+    const auto list = [](const Eigen::Vector3d& v) {
+      return std::vector<double>{v.x(), v.y(), v.z()};
+    };
     return {{"extrinsic.body_motor.translation_m", list(body_motor_m)},
             {"extrinsic.body_motor.rpy_deg", list(body_motor_rpy_deg)},
             {"extrinsic.motor_lidar.translation_m", list(motor_lidar_m)},

@@ -42,7 +42,9 @@ class RangeLimitParametersTest : public ::testing::TestWithParam<std::string> {
         plugin().Deskew(ScanAtRanges(ranges_m), encoder_, plugin_test::StaticBody());
     *dropped = out.dropped_out_of_range;
     std::vector<double> kept_ranges;  // the intensity carries the input index
-    for (const Point& p : out.points) kept_ranges.push_back(ranges_m.at(static_cast<std::size_t>(p.intensity)));
+    for (const Point& p : out.points) {
+      kept_ranges.push_back(ranges_m.at(static_cast<std::size_t>(p.intensity)));
+    }
     return kept_ranges;
   }
 
@@ -88,7 +90,7 @@ TEST_P(RangeLimitParametersTest, LimitsOutOfOrderAreAConfigErrorNamingTheKey) {
 
 INSTANTIATE_TEST_SUITE_P(AllPayloads, RangeLimitParametersTest,
                          ::testing::ValuesIn(plugin_test::PayloadNames()),
-                         [](const auto& info) { return info.param; });
+                         plugin_test::PayloadTestName);
 
 }  // namespace
 }  // namespace unimap

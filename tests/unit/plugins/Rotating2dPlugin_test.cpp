@@ -105,7 +105,13 @@ TEST_F(Rotating2dPluginTest, WallPointsLandOnTheWallWithAStaticBody) {
 }
 
 TEST_F(Rotating2dPluginTest, DerivesBeamTimesFromAzimuthForUnstampedLines) {
-  WallLine wall = MakeWallLine(mount_, 10.3);
+  // The first line (from 10 s, every 25 ms) with plenty of wall returns.
+  WallLine wall;
+  for (int j = 0; j < 40 && wall.true_body_m.size() < 300; ++j) {
+    wall = MakeWallLine(mount_, 10.0 + kLinePeriodS * j);
+  }
+  ASSERT_GE(wall.true_body_m.size(), 300u);
+  const double start_s = wall.line.start_time_s;
   // Drop the first returns: beam times must not depend on which point comes first.
   int dropped_first = 0;
   for (int i = 0; i < kBeams && dropped_first < 10; ++i) {
@@ -116,7 +122,7 @@ TEST_F(Rotating2dPluginTest, DerivesBeamTimesFromAzimuthForUnstampedLines) {
     }
   }
   const LineScanConversion stamped = LineScanToRawScan(wall.line);
-  ASSERT_GT(stamped.scan.points.size(), 100u);
+  ASSERT_GT(stamped.scan.points.size(), 200u);
   RawScan unstamped = stamped.scan;
   for (Point& p : unstamped.points) p.time_s = 0.0;
   unstamped.has_point_time = false;
@@ -124,7 +130,7 @@ TEST_F(Rotating2dPluginTest, DerivesBeamTimesFromAzimuthForUnstampedLines) {
 
   const BodyScan out = plugin().Deskew(unstamped, encoder_, plugin_test::StaticBody());
   ASSERT_EQ(out.points.size(), stamped.scan.points.size());
-  EXPECT_NEAR(out.reference_time_s, 10.3 + kBeamIntervalS * (kBeams - 1), 1e-12);
+  EXPECT_NEAR(out.reference_time_s, start_s + kBeamIntervalS * (kBeams - 1), 1e-12);
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     ASSERT_NEAR(out.points[i].time_s, stamped.scan.points[i].time_s, 1e-12) << "point " << i;
     ASSERT_LT((out.points[i].position_m - wall.true_body_m[i]).norm(), 1e-9) << "point " << i;

@@ -114,7 +114,7 @@ TEST_F(Rotating3dPluginTest, DerivesFiringTimesThenMotorAnglesForUnstampedSweeps
               1e-9);
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     ASSERT_NEAR(out.points[i].time_s, true_time_s[i], 1e-9) << "point " << i;
-    ASSERT_LT((out.points[i].position_m - wall.true_body_m[i]).norm(), 1e-6) << "point " << i;
+    ASSERT_LT((out.points[i].position_m - wall.true_body_m[i]).norm(), 1e-9) << "point " << i;
   }
 }
 

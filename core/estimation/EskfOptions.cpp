@@ -1,0 +1,32 @@
+#include "estimation/EskfOptions.hpp"
+
+#include <cmath>
+
+namespace unimap::estimation {
+
+bool EskfOptions::IsValid(std::string* why) const {
+  std::string local_why;
+  if (why == nullptr) why = &local_why;
+  const double positive[] = {sigma_accel_m_s2,
+                             sigma_gyro_rad_s,
+                             gravity_m_s2,
+                             initial_sigma_position_m,
+                             initial_sigma_velocity_m_s,
+                             initial_sigma_attitude_rad,
+                             initial_sigma_accel_bias_m_s2,
+                             initial_sigma_gyro_bias_rad_s,
+                             max_imu_gap_s};
+  for (const double value : positive) {
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      *why = "noise sigmas, initial sigmas, gravity and max_imu_gap_s must be positive and finite";
+      return false;
+    }
+  }
+  if (!(accel_bias_walk_m_s2_sqrt_s >= 0.0) || !(gyro_bias_walk_rad_s_sqrt_s >= 0.0)) {
+    *why = "bias random walks must be non-negative";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace unimap::estimation

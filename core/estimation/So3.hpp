@@ -1,0 +1,39 @@
+#pragma once
+// SO(3) helpers: skew matrix, exponential and logarithm maps on unit
+// quaternions (Sola, "Quaternion kinematics for the error-state Kalman
+// filter", eqs. 101 and 105).
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+namespace unimap::estimation {
+
+// [v]x such that [v]x w = v x w.
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+// Exp: rotation vector (rad) -> unit quaternion.
+inline Eigen::Quaterniond ExpQ(const Eigen::Vector3d& theta) {
+  const double angle = theta.norm();
+  if (angle < 1e-12) {
+    return Eigen::Quaterniond(1.0, 0.5 * theta.x(), 0.5 * theta.y(), 0.5 * theta.z()).normalized();
+  }
+  const Eigen::Vector3d axis = theta / angle;
+  const double s = std::sin(0.5 * angle);
+  return Eigen::Quaterniond(std::cos(0.5 * angle), s * axis.x(), s * axis.y(), s * axis.z());
+}
+
+// Log: unit quaternion -> rotation vector (rad), angle in [0, pi].
+inline Eigen::Vector3d LogQ(const Eigen::Quaterniond& q_in) {
+  Eigen::Quaterniond q = q_in.normalized();
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  const Eigen::Vector3d v = q.vec();
+  const double s = v.norm();
+  if (s < 1e-12) return 2.0 * v;
+  return 2.0 * std::atan2(s, q.w()) * v / s;
+}
+
+}  // namespace unimap::estimation

@@ -1,0 +1,50 @@
+#include "estimation/StaticInitializer.hpp"
+
+#include <cmath>
+
+namespace unimap::estimation {
+
+StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
+                                const StaticAlignmentOptions& options) {
+  StaticAlignment out;
+  if (static_cast<int>(samples.size()) < options.min_samples) {
+    out.reason = "only " + std::to_string(samples.size()) + " IMU samples in the static window, need " +
+                 std::to_string(options.min_samples);
+    return out;
+  }
+  Eigen::Vector3d mean_a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean_w = Eigen::Vector3d::Zero();
+  for (const auto& s : samples) {
+    mean_a += s.accel_m_s2;
+    mean_w += s.gyro_rad_s;
+  }
+  const double n = static_cast<double>(samples.size());
+  mean_a /= n;
+  mean_w /= n;
+  Eigen::Vector3d var_a = Eigen::Vector3d::Zero();
+  Eigen::Vector3d var_w = Eigen::Vector3d::Zero();
+  for (const auto& s : samples) {
+    var_a += (s.accel_m_s2 - mean_a).cwiseAbs2();
+    var_w += (s.gyro_rad_s - mean_w).cwiseAbs2();
+  }
+  const Eigen::Vector3d std_a = (var_a / n).cwiseSqrt();
+  const Eigen::Vector3d std_w = (var_w / n).cwiseSqrt();
+  if (std_a.maxCoeff() > options.max_accel_std_m_s2 || std_w.maxCoeff() > options.max_gyro_std_rad_s) {
+    out.reason = "IMU not static: accelerometer std " + std::to_string(std_a.maxCoeff()) +
+                 " m/s^2, gyroscope std " + std::to_string(std_w.maxCoeff()) + " rad/s";
+    return out;
+  }
+  // At rest f = R^T (0, 0, g): the body sees world up along f.
+  const Eigen::Vector3d f = mean_a;
+  const double roll = std::atan2(f.y(), f.z());
+  const double pitch = std::atan2(-f.x(), std::sqrt(f.y() * f.y() + f.z() * f.z()));
+  out.q_world_body = Eigen::AngleAxisd(options.yaw_rad, Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
+  out.gyro_bias_rad_s = mean_w;
+  out.gravity_m_s2 = f.norm();
+  out.ok = true;
+  return out;
+}
+
+}  // namespace unimap::estimation

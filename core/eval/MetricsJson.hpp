@@ -1,0 +1,21 @@
+#pragma once
+// metrics.json: the TrajectoryMetrics fields as one flat JSON object.
+#include <string>
+#include <vector>
+
+#include "eval/TrajectoryMetrics.hpp"
+
+namespace unimap::eval {
+
+// The JSON text (keys = TrajectoryMetrics field names, vectors as [x, y, z]
+// arrays, numbers in shortest round-trip form, empty optionals as null).
+std::string MetricsToJson(const TrajectoryMetrics& metrics);
+
+// Every key MetricsToJson writes, in output order.
+std::vector<std::string> MetricsJsonKeys();
+
+// A number as JSON: shortest decimal that reads back to the same double;
+// "null" for NaN and infinities.
+std::string JsonNumber(double value);
+
+}  // namespace unimap::eval

@@ -1,0 +1,57 @@
+#include "eval/TrajectoryErrors.hpp"
+
+#include <cmath>
+
+#include "unimap/Errors.hpp"
+
+namespace unimap::eval {
+
+Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q_in) {
+  // Take the hemisphere w >= 0 so that the angle is in [0, pi].
+  const Eigen::Quaterniond q = q_in.w() < 0.0 ? Eigen::Quaterniond(-q_in.coeffs()) : q_in;
+  const double sin_half = q.vec().norm();
+  if (sin_half < 1e-12) return 2.0 * q.vec() / q.w();  // first order: angle/2 ~ sin(angle/2)
+  // q = (cos(a/2), sin(a/2) n)  ->  log(q) = a n.
+  const double angle = 2.0 * std::atan2(sin_half, q.w());
+  return angle * q.vec() / sin_half;
+}
+
+TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association) {
+  const std::vector<AssociatedPose>& pairs = association.pairs;
+  if (pairs.empty()) throw InputError("no associated poses to compute errors from");
+  TrajectoryErrors errors;
+  std::vector<Eigen::Vector3d> est_positions;
+  std::vector<Eigen::Vector3d> true_positions;
+  est_positions.reserve(pairs.size());
+  true_positions.reserve(pairs.size());
+  for (const AssociatedPose& pair : pairs) {
+    est_positions.push_back(pair.T_est_body.translation());
+    true_positions.push_back(pair.T_true_body.translation());
+  }
+  errors.alignment = AlignRigid(est_positions, true_positions);
+
+  // T_true_est: maps the estimate's first pose onto the truth's first pose.
+  const Eigen::Isometry3d T_true_est = pairs.front().T_true_body * pairs.front().T_est_body.inverse();
+  errors.poses.reserve(pairs.size());
+  double distance_m = 0.0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const AssociatedPose& pair = pairs[k];
+    if (k > 0) distance_m += (true_positions[k] - true_positions[k - 1]).norm();
+    PoseError e;
+    e.time_s = pair.time_s;
+    e.distance_m = distance_m;
+    const Eigen::Isometry3d T_anchored = T_true_est * pair.T_est_body;
+    e.p_true = true_positions[k];
+    e.p_anchored = T_anchored.translation();
+    e.p_aligned = errors.alignment.T_target_source * est_positions[k];
+    e.position_error_m = e.p_anchored - e.p_true;
+    // Rotation error as in the paper's pose-error figure (Fig. 8): log(q_est^-1 q_true).
+    const Eigen::Quaterniond q_est(T_anchored.linear());
+    const Eigen::Quaterniond q_true(pair.T_true_body.linear());
+    e.rotation_error_rad = RotationLog((q_est.conjugate() * q_true).normalized());
+    errors.poses.push_back(e);
+  }
+  return errors;
+}
+
+}  // namespace unimap::eval

@@ -1,0 +1,39 @@
+#pragma once
+// Per-pose errors of an associated estimate against the truth (the series
+// behind the metrics and the paper's error plots; docs/evaluation.md).
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "eval/TrajectoryAssociation.hpp"
+#include "eval/UmeyamaAlignment.hpp"
+
+namespace unimap::eval {
+
+// Errors at one associated time. "Anchored" is the estimate expressed in the
+// truth frame so that it starts from the truth's first associated pose:
+// T_anch(k) = T_true(0) T_est(0)^-1 T_est(k) (no alignment).
+struct PoseError {
+  double time_s = 0.0;      // estimate time stamp
+  double distance_m = 0.0;  // truth distance travelled since the first pair (along the pairs)
+  Eigen::Vector3d p_true = Eigen::Vector3d::Zero();      // truth position, truth frame
+  Eigen::Vector3d p_anchored = Eigen::Vector3d::Zero();  // anchored estimate position, truth frame
+  Eigen::Vector3d p_aligned = Eigen::Vector3d::Zero();   // Umeyama-aligned estimate position, truth frame
+  Eigen::Vector3d position_error_m = Eigen::Vector3d::Zero();    // p_anchored - p_true, truth-frame axes
+  Eigen::Vector3d rotation_error_rad = Eigen::Vector3d::Zero();  // log(q_anch^-1 q_true) as a rotation vector
+};
+
+// The error series and the alignment used for the ATE.
+struct TrajectoryErrors {
+  std::vector<PoseError> poses;  // one per associated pair, same order
+  RigidAlignment alignment;      // estimate positions onto truth positions (ATE)
+};
+
+// Computes every PoseError; requires at least one pair (throws InputError otherwise).
+TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association);
+
+// log: unit quaternion -> rotation vector (angle * axis, angle in [0, pi]);
+// q and -q give the same result.
+Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q);
+
+}  // namespace unimap::eval

@@ -1,0 +1,53 @@
+#pragma once
+// Real data (KITTI, CARMEN, ROS 1 bags) into the dataset format
+// (docs/dataset-format.md), streamed: `unimap convert` and tests call these.
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/CarmenReader.hpp"
+#include "io/KittiReader.hpp"
+#include "io/RosbagReader.hpp"
+
+namespace unimap::io {
+
+// Where CARMEN odometry comes from.
+enum class CarmenOdometrySource {
+  kAuto,         // ODOM lines when the log has any, else the FLASER odom fields
+  kOdomLines,    // ODOM lines only
+  kLaserFields,  // odom_x odom_y odom_theta of each FLASER line
+};
+
+struct ConversionOptions {
+  std::filesystem::path input;    // KITTI folder, CARMEN log, or bag file
+  std::filesystem::path output;   // dataset folder to write
+  std::string payload;            // metadata payload name; empty = the format's default
+  double reorder_window_s = 2.0;  // how late an item may arrive and still be put in time order
+  KittiReaderOptions kitti;       // side files of a KITTI sequence
+  CarmenReaderOptions carmen;     // FLASER beam layout
+  CarmenOdometrySource carmen_odometry = CarmenOdometrySource::kAuto;
+  RosbagReaderOptions rosbag;     // topic choice
+};
+
+// What a conversion wrote and left out.
+struct ConversionReport {
+  std::string payload;                        // payload written to metadata.yaml
+  std::size_t scans = 0;                      // records in scans.bin
+  std::size_t imu = 0;                        // IMU samples
+  std::size_t encoder = 0;                    // encoder samples
+  std::size_t odometry = 0;                   // odometry samples
+  std::size_t groundtruth = 0;                // ground-truth poses
+  std::size_t dropped_points = 0;             // scan points left out (non-finite)
+  std::map<std::string, std::size_t> skipped; // reason -> items (lines, messages) not converted
+  std::vector<std::string> notes;             // choices made (topics, calibration, odometry source)
+};
+
+// Each reads `options.input` and writes `options.output`; throws InputError
+// (bad input, naming file and line / topic) or ConfigError.
+ConversionReport ConvertKitti(const ConversionOptions& options);
+ConversionReport ConvertCarmen(const ConversionOptions& options);
+ConversionReport ConvertRosbag(const ConversionOptions& options);
+
+}  // namespace unimap::io

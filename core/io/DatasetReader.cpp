@@ -1,0 +1,170 @@
+#include "io/DatasetReader.hpp"
+
+#include <memory>
+#include <optional>
+#include <system_error>
+#include <utility>
+
+#include "io/DatasetLayout.hpp"
+#include "io/NumberLineStream.hpp"
+#include "io/ScanFileReader.hpp"
+#include "io/TumLine.hpp"
+#include "unimap/Errors.hpp"
+
+namespace unimap::io {
+namespace {
+
+// Opens folder/name as T(path, args...) when the file exists; a missing
+// stream file is an empty stream.
+template <typename T, typename... Args>
+std::unique_ptr<T> OpenIfPresent(const std::filesystem::path& folder, const char* name,
+                                 Args... args) {
+  std::error_code ec;
+  if (!std::filesystem::exists(folder / name, ec)) return nullptr;
+  return std::make_unique<T>(folder / name, args...);
+}
+
+}  // namespace
+
+class DatasetReader::Impl {
+ public:
+  explicit Impl(const std::filesystem::path& folder)
+      : metadata_(LoadChecked(folder)),
+        imu_(OpenIfPresent<NumberLineStream>(folder, layout::kImu, layout::kImuColumns)),
+        encoder_(OpenIfPresent<NumberLineStream>(folder, layout::kEncoder,
+                                                 layout::kEncoderColumns)),
+        odometry_(OpenIfPresent<NumberLineStream>(folder, layout::kOdometry, kTumColumns)),
+        scans_(OpenIfPresent<ScanFileReader>(folder, layout::kScans)),
+        groundtruth_(OpenIfPresent<NumberLineStream>(folder, layout::kGroundTruth, kTumColumns)) {}
+
+  static DatasetMetadata LoadChecked(const std::filesystem::path& folder) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) {
+      throw InputError(folder.string() + ": no such dataset folder");
+    }
+    if (!std::filesystem::exists(folder / layout::kMetadata, ec)) {
+      throw InputError(folder.string() +
+                       ": no metadata.yaml: not a dataset, or an incomplete one (a writer "
+                       "that did not finish leaves only .partial files)");
+    }
+    return LoadDatasetMetadata(folder / layout::kMetadata);
+  }
+
+  std::optional<ImuSample> ReadImu() {
+    double v[layout::kImuColumns];
+    if (!imu_ || !imu_->Next(v)) return std::nullopt;
+    ImuSample sample;
+    sample.time_s = v[0];
+    sample.accel_m_s2 = Eigen::Vector3d(v[1], v[2], v[3]);
+    sample.gyro_rad_s = Eigen::Vector3d(v[4], v[5], v[6]);
+    return sample;
+  }
+
+  std::optional<EncoderSample> ReadEncoder() {
+    double v[layout::kEncoderColumns];
+    if (!encoder_ || !encoder_->Next(v)) return std::nullopt;
+    return EncoderSample{v[0], v[1]};
+  }
+
+  std::optional<OdometrySample> ReadOdometry() {
+    double v[kTumColumns];
+    if (!odometry_ || !odometry_->Next(v)) return std::nullopt;
+    OdometrySample sample;
+    sample.time_s = v[0];
+    sample.T_odom_body = TumRowPose(v, *odometry_);
+    return sample;
+  }
+
+  std::optional<ScanRecord> ReadScan() { return scans_ ? scans_->Next() : std::nullopt; }
+
+  std::optional<StampedPose> ReadGroundTruth() {
+    double v[kTumColumns];
+    if (!groundtruth_ || !groundtruth_->Next(v)) return std::nullopt;
+    StampedPose pose;
+    pose.time_s = v[0];
+    pose.T_map_body = TumRowPose(v, *groundtruth_);
+    return pose;
+  }
+
+  // The held look-ahead if any (left by NextEvent), else the next item read.
+  template <typename T>
+  std::optional<T> Take(std::optional<T>* ahead, std::optional<T> (Impl::*read)()) {
+    if (*ahead) return std::exchange(*ahead, std::nullopt);
+    return (this->*read)();
+  }
+
+  // k-way merge: one look-ahead per stream, the earliest is returned; ties
+  // go to the stream listed first (IMU, encoder, odometry, scans).
+  std::optional<DatasetEvent> NextEvent() {
+    if (!imu_ahead_) imu_ahead_ = ReadImu();
+    if (!encoder_ahead_) encoder_ahead_ = ReadEncoder();
+    if (!odometry_ahead_) odometry_ahead_ = ReadOdometry();
+    if (!scan_ahead_) scan_ahead_ = ReadScan();
+    const bool present[4] = {imu_ahead_.has_value(), encoder_ahead_.has_value(),
+                             odometry_ahead_.has_value(), scan_ahead_.has_value()};
+    const double time_s[4] = {imu_ahead_ ? imu_ahead_->time_s : 0.0,
+                              encoder_ahead_ ? encoder_ahead_->time_s : 0.0,
+                              odometry_ahead_ ? odometry_ahead_->time_s : 0.0,
+                              scan_ahead_ ? ScanEndTime(*scan_ahead_) : 0.0};
+    int best = -1;
+    for (int i = 0; i < 4; ++i) {
+      if (present[i] && (best < 0 || time_s[i] < time_s[best])) best = i;
+    }
+    switch (best) {
+      case 0:
+        return DatasetEvent(std::in_place_type<ImuSample>, *std::exchange(imu_ahead_, {}));
+      case 1:
+        return DatasetEvent(std::in_place_type<EncoderSample>, *std::exchange(encoder_ahead_, {}));
+      case 2:
+        return DatasetEvent(std::in_place_type<OdometrySample>,
+                            *std::exchange(odometry_ahead_, {}));
+      case 3:
+        return DatasetEvent(std::in_place_type<ScanRecord>, *std::exchange(scan_ahead_, {}));
+      default:
+        return std::nullopt;
+    }
+  }
+
+  DatasetMetadata metadata_;                       // metadata.yaml
+  std::unique_ptr<NumberLineStream> imu_;          // imu.csv, if present
+  std::unique_ptr<NumberLineStream> encoder_;      // encoder.csv, if present
+  std::unique_ptr<NumberLineStream> odometry_;     // odometry.csv, if present
+  std::unique_ptr<ScanFileReader> scans_;          // scans.bin, if present
+  std::unique_ptr<NumberLineStream> groundtruth_;  // groundtruth.tum, if present
+  // At most one item held per stream: the look-aheads of NextEvent().
+  std::optional<ImuSample> imu_ahead_;
+  std::optional<EncoderSample> encoder_ahead_;
+  std::optional<OdometrySample> odometry_ahead_;
+  std::optional<ScanRecord> scan_ahead_;
+};
+
+DatasetReader::DatasetReader(const std::filesystem::path& folder)
+    : impl_(std::make_unique<Impl>(folder)) {}
+
+DatasetReader::~DatasetReader() = default;
+
+const DatasetMetadata& DatasetReader::metadata() const { return impl_->metadata_; }
+
+bool DatasetReader::has_groundtruth() const { return impl_->groundtruth_ != nullptr; }
+
+std::optional<ImuSample> DatasetReader::NextImu() {
+  return impl_->Take(&impl_->imu_ahead_, &Impl::ReadImu);
+}
+
+std::optional<EncoderSample> DatasetReader::NextEncoder() {
+  return impl_->Take(&impl_->encoder_ahead_, &Impl::ReadEncoder);
+}
+
+std::optional<OdometrySample> DatasetReader::NextOdometry() {
+  return impl_->Take(&impl_->odometry_ahead_, &Impl::ReadOdometry);
+}
+
+std::optional<ScanRecord> DatasetReader::NextScan() {
+  return impl_->Take(&impl_->scan_ahead_, &Impl::ReadScan);
+}
+
+std::optional<StampedPose> DatasetReader::NextGroundTruth() { return impl_->ReadGroundTruth(); }
+
+std::optional<DatasetEvent> DatasetReader::NextEvent() { return impl_->NextEvent(); }
+
+}  // namespace unimap::io

@@ -1,0 +1,311 @@
+#include "io/RosbagReader.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "unimap/Errors.hpp"
+
+#if UNIMAP_WITH_ROSBAG
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <rosbag/exceptions.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
+#include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
+#endif
+
+namespace unimap::io {
+
+#if UNIMAP_WITH_ROSBAG
+namespace {
+
+// What a selected topic is read as.
+enum class Stream { kCloud, kLaser, kImu, kJoint, kOdometry, kGroundTruth };
+
+constexpr const char* kPointCloud2 = "sensor_msgs/PointCloud2";
+constexpr const char* kLaserScan = "sensor_msgs/LaserScan";
+constexpr const char* kImu = "sensor_msgs/Imu";
+constexpr const char* kJointState = "sensor_msgs/JointState";
+constexpr const char* kOdometry = "nav_msgs/Odometry";
+constexpr const char* kPoseStamped = "geometry_msgs/PoseStamped";
+
+// Header stamp in seconds, or the bag's receive time when the stamp is zero.
+double StampOr(const ros::Time& stamp, const rosbag::MessageInstance& m) {
+  return stamp.isZero() ? m.getTime().toSec() : stamp.toSec();
+}
+
+// Pose from a ROS position and orientation; false for a quaternion that cannot be normalised.
+bool ToIsometry(const geometry_msgs::Pose& pose, Eigen::Isometry3d* T) {
+  Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);
+  const double norm = q.norm();
+  if (!std::isfinite(norm) || norm < 1e-6) return false;
+  *T = Eigen::Isometry3d::Identity();
+  T->linear() = q.normalized().toRotationMatrix();
+  T->translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+  return T->matrix().allFinite();
+}
+
+}  // namespace
+
+class RosbagReader::Impl {
+ public:
+  std::string label;                         // bag path, for messages
+  RosbagReaderOptions options;
+  rosbag::Bag bag;
+  std::vector<RosbagTopicInfo> topics;       // every topic in the bag
+  RosbagTopics selected;                     // resolved choice ("" = not read)
+  std::map<std::string, Stream> stream_of;   // selected topic -> stream
+  std::unique_ptr<rosbag::View> view;        // messages of the selected topics
+  rosbag::View::iterator it;                 // next message
+  RosbagReaderStats stats;
+
+  [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
+
+  std::string TopicList() const {
+    std::ostringstream out;
+    for (const RosbagTopicInfo& t : topics) out << "\n  " << t.topic << " (" << t.datatype << ", " << t.messages << ")";
+    return out.str();
+  }
+
+  const RosbagTopicInfo* Find(const std::string& topic) const {
+    for (const RosbagTopicInfo& t : topics) {
+      if (t.topic == topic) return &t;
+    }
+    return nullptr;
+  }
+
+  // Resolves one stream's request (see RosbagTopics) to a topic or "".
+  std::string Resolve(const std::string& request, const std::vector<std::string>& types, const char* option,
+                      bool allow_auto) const {
+    auto accepted = [&](const std::string& type) { return std::find(types.begin(), types.end(), type) != types.end(); };
+    if (request == "none" || (request.empty() && !allow_auto)) return "";
+    if (!request.empty()) {
+      const RosbagTopicInfo* info = Find(request);
+      if (info == nullptr) Fail("no topic " + request + " in the bag; its topics:" + TopicList());
+      if (!accepted(info->datatype)) {
+        Fail("topic " + request + " is " + info->datatype + ", not usable for " + option + "; its topics:" + TopicList());
+      }
+      return request;
+    }
+    std::vector<std::string> candidates;
+    for (const RosbagTopicInfo& t : topics) {
+      if (accepted(t.datatype) && t.topic != selected.groundtruth) candidates.push_back(t.topic);
+    }
+    if (candidates.size() > 1) {
+      Fail("several " + types.front() + " topics; choose one with " + option + " (or 'none'); its topics:" + TopicList());
+    }
+    return candidates.empty() ? "" : candidates.front();
+  }
+
+  void ListTopics() {
+    rosbag::View all(bag);
+    for (const rosbag::ConnectionInfo* c : all.getConnections()) {
+      if (Find(c->topic) != nullptr) continue;
+      RosbagTopicInfo info;
+      info.topic = c->topic;
+      info.datatype = c->datatype;
+      info.messages = rosbag::View(bag, rosbag::TopicQuery(c->topic)).size();
+      topics.push_back(info);
+    }
+  }
+
+  void Select() {
+    const RosbagTopics& request = options.topics;
+    selected.groundtruth = Resolve(request.groundtruth, {kOdometry, kPoseStamped}, "--groundtruth-topic", false);
+    selected.cloud = Resolve(request.cloud, {kPointCloud2}, "--cloud-topic", true);
+    selected.laser = Resolve(request.laser, {kLaserScan}, "--laser-topic", true);
+    selected.imu = Resolve(request.imu, {kImu}, "--imu-topic", true);
+    selected.joint = Resolve(request.joint, {kJointState}, "--joint-topic", true);
+    selected.odometry = Resolve(request.odometry, {kOdometry}, "--odometry-topic", true);
+    const std::pair<const std::string*, Stream> choices[] = {
+        {&selected.cloud, Stream::kCloud}, {&selected.laser, Stream::kLaser}, {&selected.imu, Stream::kImu},
+        {&selected.joint, Stream::kJoint}, {&selected.odometry, Stream::kOdometry},
+        {&selected.groundtruth, Stream::kGroundTruth}};
+    std::vector<std::string> names;
+    for (const auto& [topic, stream] : choices) {
+      if (topic->empty()) continue;
+      if (!stream_of.emplace(*topic, stream).second) Fail("topic " + *topic + " is chosen for two streams");
+      names.push_back(*topic);
+    }
+    if (names.empty()) return;
+    view = std::make_unique<rosbag::View>(bag, rosbag::TopicQuery(names));
+    it = view->begin();
+  }
+
+  // Counts a skipped message; returns false (Convert's "skipped").
+  bool Skip(const std::string& reason) {
+    ++stats.skipped[reason];
+    return false;
+  }
+
+  // Converts one message; false when it was skipped.
+  bool Convert(const rosbag::MessageInstance& m, Stream stream, RosbagMessage* out) {
+    out->topic = m.getTopic();
+    switch (stream) {
+      case Stream::kCloud: {
+        auto cloud = m.instantiate<sensor_msgs::PointCloud2>();
+        if (!cloud) return Skip(out->topic + ": message definition differs from sensor_msgs/PointCloud2");
+        const double stamp = StampOr(cloud->header.stamp, m);
+        out->stamp_s = stamp;
+        try {
+          std::vector<CloudField> fields;
+          for (const sensor_msgs::PointField& f : cloud->fields) fields.push_back({f.name, f.offset, f.datatype, f.count});
+          const PointCloud2Decoder decoder(fields, cloud->point_step, cloud->is_bigendian != 0);
+          CloudDecoding decoded = decoder.Decode(cloud->data.data(), cloud->data.size(), cloud->width, cloud->height,
+                                                 cloud->row_step, stamp);
+          out->dropped_points = decoded.dropped;
+          out->time_convention = decoded.time_convention;
+          stats.dropped_points += decoded.dropped;
+          out->data = std::move(decoded.scan);
+        } catch (const InputError& e) {
+          std::ostringstream where;
+          where.precision(17);
+          where << out->topic << " at t=" << stamp << ": " << e.what();
+          Fail(where.str());
+        }
+        return true;
+      }
+      case Stream::kLaser: {
+        auto scan = m.instantiate<sensor_msgs::LaserScan>();
+        if (!scan) return Skip(out->topic + ": message definition differs from sensor_msgs/LaserScan");
+        LineScan line;
+        line.start_time_s = StampOr(scan->header.stamp, m);
+        out->stamp_s = line.start_time_s;
+        line.angle_min_rad = scan->angle_min;
+        line.angle_increment_rad = scan->angle_increment;
+        line.time_increment_s = scan->time_increment;
+        line.range_min_m = scan->range_min;
+        line.range_max_m = scan->range_max;
+        line.ranges_m = scan->ranges;
+        if (scan->intensities.size() == scan->ranges.size()) line.intensities = scan->intensities;
+        if (line.ranges_m.empty()) return Skip(out->topic + ": LaserScan without beams");
+        out->data = std::move(line);
+        return true;
+      }
+      case Stream::kImu: {
+        auto imu = m.instantiate<sensor_msgs::Imu>();
+        if (!imu) return Skip(out->topic + ": message definition differs from sensor_msgs/Imu");
+        ImuSample sample;
+        sample.time_s = StampOr(imu->header.stamp, m);
+        out->stamp_s = sample.time_s;
+        sample.accel_m_s2 = {imu->linear_acceleration.x, imu->linear_acceleration.y, imu->linear_acceleration.z};
+        sample.gyro_rad_s = {imu->angular_velocity.x, imu->angular_velocity.y, imu->angular_velocity.z};
+        if (!sample.accel_m_s2.allFinite() || !sample.gyro_rad_s.allFinite()) {
+          return Skip(out->topic + ": Imu with non-finite values");
+        }
+        out->data = sample;
+        return true;
+      }
+      case Stream::kJoint: {
+        auto joints = m.instantiate<sensor_msgs::JointState>();
+        if (!joints) return Skip(out->topic + ": message definition differs from sensor_msgs/JointState");
+        std::size_t index = 0;
+        if (!options.joint_name.empty()) {
+          const auto found = std::find(joints->name.begin(), joints->name.end(), options.joint_name);
+          if (found == joints->name.end()) return Skip(out->topic + ": JointState without joint " + options.joint_name);
+          index = static_cast<std::size_t>(found - joints->name.begin());
+        }
+        if (index >= joints->position.size() || !std::isfinite(joints->position[index])) {
+          return Skip(out->topic + ": JointState without a finite position");
+        }
+        out->stamp_s = StampOr(joints->header.stamp, m);
+        out->data = EncoderSample{out->stamp_s, joints->position[index]};
+        return true;
+      }
+      case Stream::kOdometry:
+      case Stream::kGroundTruth: {
+        Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+        double time_s = 0.0;
+        if (m.getDataType() == kPoseStamped) {
+          auto pose = m.instantiate<geometry_msgs::PoseStamped>();
+          if (!pose) return Skip(out->topic + ": message definition differs from geometry_msgs/PoseStamped");
+          time_s = StampOr(pose->header.stamp, m);
+          if (!ToIsometry(pose->pose, &T)) return Skip(out->topic + ": pose with an invalid quaternion");
+        } else {
+          auto odometry = m.instantiate<nav_msgs::Odometry>();
+          if (!odometry) return Skip(out->topic + ": message definition differs from nav_msgs/Odometry");
+          time_s = StampOr(odometry->header.stamp, m);
+          if (!ToIsometry(odometry->pose.pose, &T)) return Skip(out->topic + ": pose with an invalid quaternion");
+        }
+        out->stamp_s = time_s;
+        if (stream == Stream::kOdometry) {
+          out->data = OdometrySample{time_s, T};
+        } else {
+          out->data = StampedPose{time_s, T};
+        }
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
+RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->label = bag.string();
+  impl_->options = std::move(options);
+  try {
+    impl_->bag.open(impl_->label, rosbag::bagmode::Read);
+    impl_->ListTopics();
+    impl_->Select();
+  } catch (const rosbag::BagException& e) {
+    impl_->Fail(std::string("cannot read ROS bag: ") + e.what());
+  }
+}
+
+bool RosbagReader::Supported() { return true; }
+
+std::optional<RosbagMessage> RosbagReader::Next() {
+  if (!impl_->view) return std::nullopt;
+  try {
+    while (impl_->it != impl_->view->end()) {
+      const rosbag::MessageInstance& m = *impl_->it;
+      const Stream stream = impl_->stream_of.at(m.getTopic());
+      RosbagMessage message;
+      const bool converted = impl_->Convert(m, stream, &message);
+      ++impl_->it;
+      if (!converted) continue;
+      ++impl_->stats.delivered[message.topic];
+      return message;
+    }
+  } catch (const rosbag::BagException& e) {
+    impl_->Fail(std::string("damaged bag data: ") + e.what());
+  } catch (const ros::Exception& e) {
+    impl_->Fail(std::string("cannot decode a message: ") + e.what());
+  }
+  return std::nullopt;
+}
+
+const std::vector<RosbagTopicInfo>& RosbagReader::topics() const { return impl_->topics; }
+const RosbagTopics& RosbagReader::selected() const { return impl_->selected; }
+const RosbagReaderStats& RosbagReader::stats() const { return impl_->stats; }
+
+#else  // !UNIMAP_WITH_ROSBAG
+
+class RosbagReader::Impl {
+ public:
+  std::vector<RosbagTopicInfo> topics;
+  RosbagTopics selected;
+  RosbagReaderStats stats;
+};
+
+RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions /*options*/) {
+  throw InputError(bag.string() +
+                   ": this build of unimap cannot read ROS bags (configured without UNIMAP_WITH_ROSBAG; install "
+                   "librosbag-storage-dev, libsensor-msgs-dev and libnav-msgs-dev, see scripts/install-deps.sh)");
+}
+
+bool RosbagReader::Supported() { return false; }
+std::optional<RosbagMessage> RosbagReader::Next() { return std::nullopt; }
+const std::vector<RosbagTopicInfo>& RosbagReader::topics() const { return impl_->topics; }
+const RosbagTopics& RosbagReader::selected() const { return impl_->selected; }
+const RosbagReaderStats& RosbagReader::stats() const { return impl_->stats; }
+
+#endif
+
+RosbagReader::~RosbagReader() = default;
+
+}  // namespace unimap::io

@@ -1,0 +1,52 @@
+#include "map/DistanceMapOptions.hpp"
+
+#include <cmath>
+
+namespace unimap::map {
+
+namespace {
+
+bool Fail(std::string* why, const std::string& reason) {
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+bool PositiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
+
+}  // namespace
+
+bool DistanceMapOptions::IsValid(std::string* why) const {
+  if (!PositiveFinite(resolution_m)) return Fail(why, "resolution_m must be positive and finite");
+  if (!PositiveFinite(max_range_m) || max_range_m < 2.0 * resolution_m) {
+    return Fail(why, "max_range_m must be finite and at least two voxels (2 * resolution_m)");
+  }
+  if (!PositiveFinite(clamp_distance_m) || clamp_distance_m < resolution_m ||
+      clamp_distance_m > max_range_m) {
+    return Fail(why, "clamp_distance_m must lie in [resolution_m, max_range_m]");
+  }
+  if (!(recentre_fraction > 0.0 && recentre_fraction <= 1.0)) {
+    return Fail(why, "recentre_fraction must lie in (0, 1]");
+  }
+  if (!(std::isfinite(growth_margin_m) && growth_margin_m >= 0.0)) {
+    return Fail(why, "growth_margin_m must be finite and non-negative");
+  }
+  if (max_edt_cells < 1000) return Fail(why, "max_edt_cells must be at least 1000");
+  if (!PositiveFinite(max_insert_range_m)) {
+    return Fail(why, "max_insert_range_m must be positive and finite");
+  }
+  if (!(prob_hit > 0.5 && prob_hit < 1.0)) return Fail(why, "prob_hit must lie in (0.5, 1)");
+  if (!(prob_miss > 0.0 && prob_miss < 0.5)) return Fail(why, "prob_miss must lie in (0, 0.5)");
+  if (!(clamp_min_probability > 0.0 && clamp_min_probability < occupancy_threshold &&
+        occupancy_threshold < clamp_max_probability && clamp_max_probability < 1.0)) {
+    return Fail(why,
+                "need 0 < clamp_min_probability < occupancy_threshold < clamp_max_probability < 1");
+  }
+  // Octree keys are 16 bit: coordinates must stay within +-32768 voxels.
+  const double key_half_range_m = 32768.0 * resolution_m;
+  if (max_range_m + max_insert_range_m >= 0.5 * key_half_range_m) {
+    return Fail(why, "max_range_m + max_insert_range_m must be below 16384 voxels (octree key range)");
+  }
+  return true;
+}
+
+}  // namespace unimap::map

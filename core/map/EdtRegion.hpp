@@ -1,0 +1,47 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "map/DistanceField.hpp"
+#include "map/KeyBox.hpp"
+
+namespace octomap {
+class OcTree;
+}
+template <class TREE>
+class DynamicEDTOctomapBase;
+
+namespace unimap::map {
+
+// The incremental Euclidean distance transform (DynamicEDT3D, via its OctoMap
+// adaptor) over one box of octree voxels. It consumes the octree's change
+// detection: every Update() applies the keys changed since the previous one.
+// Not thread-safe; the owner serialises access together with the tree.
+class EdtRegion {
+ public:
+  // Builds the transform over box from the tree's current occupancy (any
+  // pending change keys are discarded first, they are already in the tree)
+  // and computes all distances, exact up to clamp_m. box must not be empty.
+  EdtRegion(octomap::OcTree* tree, const KeyBox& box, float clamp_m);
+  ~EdtRegion();
+  EdtRegion(const EdtRegion&) = delete;
+  EdtRegion& operator=(const EdtRegion&) = delete;
+
+  // Applies the voxels whose occupancy changed since the last call (changes
+  // outside the box are ignored) and repairs the distances around them.
+  void Update();
+  // Copies the box into a new immutable field tagged with sequence.
+  std::shared_ptr<const DistanceField> Export(std::uint64_t sequence) const;
+
+  const KeyBox& box() const { return box_; }
+  std::size_t CellCount() const { return box_.CellCount(); }
+
+ private:
+  octomap::OcTree* tree_;
+  KeyBox box_;
+  float clamp_m_;
+  std::unique_ptr<DynamicEDTOctomapBase<octomap::OcTree>> edt_;
+};
+
+}  // namespace unimap::map

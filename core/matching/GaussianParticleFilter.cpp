@@ -1,0 +1,155 @@
+#include "matching/GaussianParticleFilter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "estimation/So3.hpp"
+#include "matching/ScanLikelihood.hpp"
+#include "matching/VoxelDownsampler.hpp"
+
+namespace unimap::matching {
+namespace {
+
+// Dimensions sampled: all six, or x, y, yaw for planar motion.
+std::vector<int> ActiveDims(bool planar) {
+  return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
+}
+
+Eigen::Isometry3d Perturb(const Eigen::Isometry3d& T, const Vector6d& e) {
+  // p_true = p + dp, q_true = q * Exp(dtheta): the ESKF's error convention.
+  Eigen::Isometry3d out = T;
+  out.translation() += e.head<3>();
+  out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
+  return out;
+}
+
+}  // namespace
+
+struct GaussianParticleFilter::Workspace {
+  std::vector<Vector6d> particles;
+  std::vector<double> log_weights;
+  std::unique_ptr<tbb::task_arena> arena;
+};
+
+GaussianParticleFilter::GaussianParticleFilter(GpfOptions options)
+    : options_(options), rng_(options.seed), workspace_(std::make_unique<Workspace>()) {
+  std::string why;
+  if (!options_.IsValid(&why)) throw std::invalid_argument("GpfOptions: " + why);
+  if (options_.threads > 1) workspace_->arena = std::make_unique<tbb::task_arena>(options_.threads);
+}
+
+GaussianParticleFilter::~GaussianParticleFilter() = default;
+
+GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_predicted,
+                                        const Matrix6d& predicted_covariance,
+                                        const std::vector<Eigen::Vector3f>& points_body,
+                                        const DistanceQuery& field) {
+  GpfResult result;
+  const std::vector<Eigen::Vector3f> points =
+      VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
+  ++scans_matched_;
+  result.points_used = static_cast<int>(points.size());
+  if (points.empty()) {
+    result.reason = "no points to match";
+    return result;
+  }
+  const std::vector<int> dims = ActiveDims(options_.planar);
+  const int d = static_cast<int>(dims.size());
+
+  // Sampling covariance: the prediction on the active dimensions, floored.
+  Eigen::MatrixXd S(d, d);
+  for (int r = 0; r < d; ++r) {
+    for (int c = 0; c < d; ++c) S(r, c) = predicted_covariance(dims[r], dims[c]);
+  }
+  for (int r = 0; r < d; ++r) {
+    const double floor = dims[r] < 3 ? options_.min_sigma_position_m : options_.min_sigma_rotation_rad;
+    S(r, r) = std::max(S(r, r), floor * floor);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  if (llt.info() != Eigen::Success) {
+    result.reason = "predicted covariance is not positive definite";
+    return result;
+  }
+  const Eigen::MatrixXd L = llt.matrixL();
+
+  const int K = options_.num_particles;
+  auto& ws = *workspace_;
+  ws.particles.assign(static_cast<std::size_t>(K), Vector6d::Zero());
+  ws.log_weights.assign(static_cast<std::size_t>(K), 0.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::VectorXd xi(d);
+  for (int k = 0; k < K; ++k) {
+    for (int j = 0; j < d; ++j) xi(j) = normal(rng_);
+    const Eigen::VectorXd e = L * xi;
+    for (int j = 0; j < d; ++j) ws.particles[static_cast<std::size_t>(k)](dims[j]) = e(j);
+  }
+
+  // Weight every particle by the scan likelihood (independent, so parallel and deterministic).
+  const ScanLikelihood likelihood(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points);
+  const auto weigh = [&](const tbb::blocked_range<int>& range) {
+    std::vector<Eigen::Vector3f> scratch_points;
+    std::vector<float> scratch_distances;
+    for (int k = range.begin(); k != range.end(); ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      ws.log_weights[i] = likelihood.LogLikelihood(field, Perturb(T_map_body_predicted, ws.particles[i]), points,
+                                                   &scratch_points, &scratch_distances);
+    }
+  };
+  if (ws.arena) {
+    ws.arena->execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, K, 16), weigh); });
+  } else {
+    weigh(tbb::blocked_range<int>(0, K));
+  }
+
+  // Sample statistics (mu_s, S_s) and weighted posterior (mu_p, S_p).
+  const double max_log = *std::max_element(ws.log_weights.begin(), ws.log_weights.end());
+  std::vector<double> w(static_cast<std::size_t>(K));
+  double sum_w = 0.0;
+  for (int k = 0; k < K; ++k) sum_w += (w[static_cast<std::size_t>(k)] = std::exp(ws.log_weights[static_cast<std::size_t>(k)] - max_log));
+  double sum_w2 = 0.0;
+  for (auto& wk : w) {
+    wk /= sum_w;
+    sum_w2 += wk * wk;
+  }
+  result.effective_sample_size = 1.0 / sum_w2;
+  Vector6d mu_s = Vector6d::Zero(), mu_p = Vector6d::Zero();
+  for (int k = 0; k < K; ++k) {
+    mu_s += ws.particles[static_cast<std::size_t>(k)] / K;
+    mu_p += w[static_cast<std::size_t>(k)] * ws.particles[static_cast<std::size_t>(k)];
+  }
+  Matrix6d S_s = Matrix6d::Zero(), S_p = Matrix6d::Zero();
+  for (int k = 0; k < K; ++k) {
+    const Vector6d ds = ws.particles[static_cast<std::size_t>(k)] - mu_s;
+    const Vector6d dp = ws.particles[static_cast<std::size_t>(k)] - mu_p;
+    S_s += ds * ds.transpose() / (K - 1);
+    S_p += w[static_cast<std::size_t>(k)] * dp * dp.transpose();
+  }
+  // Regularise the posterior by the particle spacing (kernel of S_s / K) so
+  // a few dominant particles do not make it singular; unit variance in the
+  // dimensions not sampled, so they carry no information.
+  S_p += S_s / K;
+  for (int i = 0; i < 6; ++i) {
+    if (std::find(dims.begin(), dims.end(), i) == dims.end()) {
+      S_s(i, i) = 1.0;
+      S_p(i, i) = 1.0;
+    }
+  }
+  result.sample_mean = mu_s;
+  result.sample_covariance = S_s;
+  result.posterior_mean = mu_p;
+  result.posterior_covariance = S_p;
+  result.measurement = RecoverPseudoMeasurement(mu_s, S_s, mu_p, S_p, options_.min_information_ratio);
+  if (!result.measurement.ok) {
+    result.reason = "sample or posterior covariance is not positive definite";
+    return result;
+  }
+  result.ok = true;
+  return result;
+}
+
+}  // namespace unimap::matching

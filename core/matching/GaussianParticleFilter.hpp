@@ -1,0 +1,51 @@
+#pragma once
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "matching/DistanceQuery.hpp"
+#include "matching/GpfOptions.hpp"
+#include "matching/PseudoMeasurement.hpp"
+
+namespace unimap::matching {
+
+// Outcome of matching one scan.
+struct GpfResult {
+  bool ok = false;                        // false: see reason (no points, degenerate covariance)
+  std::string reason;
+  Vector6d sample_mean = Vector6d::Zero();        // mu_s of the drawn particles, [dp, dtheta]
+  Matrix6d sample_covariance = Matrix6d::Zero();  // S_s
+  Vector6d posterior_mean = Vector6d::Zero();     // mu_p, likelihood-weighted
+  Matrix6d posterior_covariance = Matrix6d::Zero();  // S_p
+  PseudoMeasurement measurement;          // (z, R) for Eskf::UpdatePoseError
+  double effective_sample_size = 0.0;     // 1 / sum w^2
+  int points_used = 0;                    // after downsampling
+};
+
+// Gaussian particle filter scan matcher (Bry et al. 2012): samples pose
+// errors [dp, dtheta] (p + dp, q * Exp(dtheta)) from the predicted
+// covariance, weights each by the scan likelihood in the distance map, and
+// returns the weighted mean and covariance with the pseudo measurement that
+// reproduces them in the ESKF.
+class GaussianParticleFilter {
+ public:
+  explicit GaussianParticleFilter(GpfOptions options);
+  ~GaussianParticleFilter();
+
+  GpfResult Match(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
+                  const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field);
+
+  const GpfOptions& options() const { return options_; }
+
+ private:
+  struct Workspace;
+  GpfOptions options_;
+  std::mt19937_64 rng_;
+  std::uint64_t scans_matched_ = 0;
+  std::unique_ptr<Workspace> workspace_;
+};
+
+}  // namespace unimap::matching

@@ -1,0 +1,29 @@
+#include "matching/GpfOptions.hpp"
+
+namespace unimap::matching {
+
+bool GpfOptions::IsValid(std::string* why) const {
+  std::string local_why;
+  if (why == nullptr) why = &local_why;
+  if (num_particles < 10) {
+    *why = "num_particles must be at least 10";
+    return false;
+  }
+  if (!(point_sigma_m > 0.0) || !(clamp_distance_m > 0.0) || !(voxel_size_m >= 0.0) ||
+      !(effective_points > 0.0)) {
+    *why = "point_sigma_m, clamp_distance_m and effective_points must be positive, voxel_size_m >= 0";
+    return false;
+  }
+  if (max_points < 0 || threads < 1) {
+    *why = "max_points must be >= 0 and threads >= 1";
+    return false;
+  }
+  if (!(min_sigma_position_m >= 0.0) || !(min_sigma_rotation_rad >= 0.0) ||
+      !(min_information_ratio > 0.0 && min_information_ratio < 1.0)) {
+    *why = "sigma floors must be >= 0 and min_information_ratio in (0, 1)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace unimap::matching

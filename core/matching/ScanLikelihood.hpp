@@ -1,0 +1,30 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "matching/DistanceQuery.hpp"
+
+namespace unimap::matching {
+
+// Log-likelihood of a scan at a pose in a distance map (the GPF's weight):
+//   log L = (effective_points / n) * sum_i -min(d_i, clamp)^2 / (2 sigma^2),
+// d_i the distance of point i, transformed by T_map_body, to the nearest
+// surface. Scaling to effective_points treats neighbouring returns as
+// correlated so that one scan does not make the weights degenerate.
+class ScanLikelihood {
+ public:
+  ScanLikelihood(double sigma_m, double clamp_m, double effective_points);
+
+  // Scratch buffers are resized as needed (one set per thread).
+  double LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
+                       const std::vector<Eigen::Vector3f>& points_body,
+                       std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances) const;
+
+ private:
+  float inv_two_sigma_sq_;
+  float clamp_m_;
+  double effective_points_;
+};
+
+}  // namespace unimap::matching

@@ -1,0 +1,46 @@
+#include "matching/VoxelDownsampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <unordered_set>
+
+namespace unimap::matching {
+namespace {
+
+std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
+  const auto cell = [&](float v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv_voxel)) + (1 << 20)) &
+           0x1FFFFF;
+  };
+  return (cell(p.x()) << 42) | (cell(p.y()) << 21) | cell(p.z());
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
+                                             int max_points, std::uint64_t seed) {
+  std::vector<Eigen::Vector3f> kept;
+  if (voxel_m > 0.0) {
+    const double inv_voxel = 1.0 / voxel_m;
+    std::unordered_set<std::uint64_t> seen;
+    seen.reserve(points.size());
+    for (const auto& p : points) {
+      if (seen.insert(VoxelKey(p, inv_voxel)).second) kept.push_back(p);
+    }
+  } else {
+    kept = points;
+  }
+  if (max_points > 0 && static_cast<int>(kept.size()) > max_points) {
+    // Partial Fisher-Yates: the first max_points entries become a uniform sample.
+    std::mt19937_64 rng(seed);
+    for (int i = 0; i < max_points; ++i) {
+      std::uniform_int_distribution<std::size_t> pick(static_cast<std::size_t>(i), kept.size() - 1);
+      std::swap(kept[static_cast<std::size_t>(i)], kept[pick(rng)]);
+    }
+    kept.resize(static_cast<std::size_t>(max_points));
+  }
+  return kept;
+}
+
+}  // namespace unimap::matching

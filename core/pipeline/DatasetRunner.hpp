@@ -1,0 +1,48 @@
+#pragma once
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "io/DatasetReader.hpp"
+#include "io/TumTrajectory.hpp"
+#include "pipeline/Localizer.hpp"
+
+namespace unimap::pipeline {
+
+// Progress of a run, reported about once per second of wall time.
+struct RunProgress {
+  std::size_t scans = 0;        // scans processed so far
+  double data_time_s = 0.0;     // data time covered since the first event
+  double data_duration_s = 0.0;  // expected total (metadata), 0 if unknown
+  double wall_s = 0.0;          // processing time so far
+};
+
+struct RunOptions {
+  double max_duration_s = 0.0;                 // stop after this much data time (0: all)
+  const std::atomic<bool>* stop = nullptr;     // set (e.g. by SIGINT) to stop early
+  std::function<void(const RunProgress&)> on_progress;  // optional
+};
+
+// What a run did and how fast.
+struct RunSummary {
+  std::size_t poses_written = 0;
+  double data_duration_s = 0.0;   // time span of the data processed
+  double processing_s = 0.0;      // wall time of the loop
+  double realtime_factor = 0.0;   // data_duration_s / processing_s
+  double peak_rss_mb = 0.0;       // process peak resident memory
+  bool interrupted = false;       // stopped by RunOptions::stop
+  std::string error;              // a reader error (truncated or malformed file) that ended the run early
+};
+
+// Feeds every event of a dataset to the localiser in time order and writes
+// each scan pose (T_map_body) to the trajectory. Input errors inside the
+// localiser are counted skips; a reader error (truncated or malformed file)
+// ends the run early, keeps what was processed and is reported in
+// RunSummary::error.
+RunSummary RunDataset(io::DatasetReader& reader, Localizer& localizer, io::TumTrajectoryWriter& trajectory,
+                      const RunOptions& options);
+
+// Peak resident set size of this process (MiB).
+double PeakRssMb();
+
+}  // namespace unimap::pipeline

@@ -1,0 +1,236 @@
+#include "pipeline/Localizer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "estimation/So3.hpp"
+#include "estimation/StaticInitializer.hpp"
+#include "pipeline/FieldDistanceQuery.hpp"
+#include "unimap/Errors.hpp"
+#include "unimap/LineScan.hpp"
+
+namespace unimap::pipeline {
+namespace {
+
+constexpr std::size_t kMaxMessages = 20;
+
+Eigen::Isometry3d ApplyCorrection(const Eigen::Isometry3d& T, const matching::Vector6d& e) {
+  // p + dp, q * Exp(dtheta): the ESKF's error convention.
+  Eigen::Isometry3d out = T;
+  out.translation() += e.head<3>();
+  out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
+  return out;
+}
+
+LocalizerOptions Checked(LocalizerOptions options) {
+  std::string why;
+  if (!options.IsValid(&why)) throw ConfigError("", 0, "", "localizer options: " + why);
+  return options;
+}
+
+}  // namespace
+
+Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
+                     std::unique_ptr<map::DistanceMap> prior_map,
+                     std::optional<Eigen::Isometry3d> initial_pose)
+    : options_(Checked(options)),
+      plugin_(std::move(plugin)),
+      map_(prior_map ? std::move(prior_map) : std::make_unique<map::DistanceMap>(options_.map)),
+      initial_pose_(initial_pose),
+      eskf_(options_.eskf),
+      gpf_(options_.gpf),
+      encoder_(std::vector<EncoderSample>{}, 0.5),
+      history_(2.0),
+      accumulator_(options_.scans_per_3d_scan) {
+  if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
+}
+
+Localizer::~Localizer() = default;
+
+void Localizer::Skip(std::size_t* counter, const std::string& message) {
+  ++*counter;
+  if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(message);
+}
+
+void Localizer::AddImu(const ImuSample& sample) {
+  ++stats_.imu_samples;
+  if (!(sample.time_s > last_imu_time_s_) || !sample.accel_m_s2.allFinite() || !sample.gyro_rad_s.allFinite()) {
+    Skip(&stats_.imu_out_of_order, "IMU sample at " + std::to_string(sample.time_s) +
+                                       " s is not after the previous one or not finite: skipped");
+    return;
+  }
+  last_imu_time_s_ = sample.time_s;
+  if (!eskf_.initialized()) {
+    init_imu_.push_back(sample);
+    TryInitialize();
+  } else if (!eskf_.Propagate(sample)) {
+    ++stats_.imu_gaps;
+    eskf_.RestartImu(sample);
+  }
+  if (eskf_.initialized()) history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
+  ProcessReadyScans(false);
+}
+
+void Localizer::AddEncoder(const EncoderSample& sample) {
+  if (!encoder_.empty() && !(sample.time_s > encoder_.end_time_s())) {
+    Skip(&stats_.encoder_rejected, "encoder sample at " + std::to_string(sample.time_s) +
+                                       " s is not after the previous one: skipped");
+    return;
+  }
+  try {
+    encoder_.Append(sample);
+  } catch (const InputError& e) {
+    Skip(&stats_.encoder_rejected, std::string("encoder sample: ") + e.what());
+    return;
+  }
+  // Keep a couple of seconds: enough for any scan still waiting.
+  encoder_.DropBefore(sample.time_s - 2.0);
+  ProcessReadyScans(false);
+}
+
+void Localizer::AddScan(io::ScanRecord scan) {
+  ++stats_.scans;
+  pending_.push_back(std::move(scan));
+  ProcessReadyScans(false);
+}
+
+void Localizer::Finish() { ProcessReadyScans(true); }
+
+std::vector<ScanPose> Localizer::TakePoses() {
+  std::vector<ScanPose> out;
+  out.swap(poses_);
+  return out;
+}
+
+void Localizer::TryInitialize() {
+  if (init_imu_.back().time_s - init_imu_.front().time_s < options_.static_init_s) return;
+  estimation::StaticAlignmentOptions align_options;
+  align_options.min_samples = 2;
+  const estimation::StaticAlignment alignment = estimation::AlignFromStatic(init_imu_, align_options);
+  estimation::NavState state;
+  state.time_s = init_imu_.back().time_s;
+  if (alignment.ok) {
+    state.q_world_body = alignment.q_world_body;
+    state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
+  } else if (stats_.messages.size() < kMaxMessages) {
+    stats_.messages.push_back("initial alignment: " + alignment.reason + "; starting level");
+  }
+  if (initial_pose_) {
+    // The given pose fixes position and heading; roll and pitch stay from gravity when aligned.
+    state.p_world_body_m = initial_pose_->translation();
+    state.q_world_body = Eigen::Quaterniond(initial_pose_->linear());
+  }
+  eskf_.Initialize(state);
+  eskf_.Propagate(init_imu_.back());
+  init_imu_.clear();
+  init_imu_.shrink_to_fit();
+}
+
+void Localizer::ProcessReadyScans(bool finishing) {
+  while (!pending_.empty()) {
+    const io::ScanRecord& scan = pending_.front();
+    const double t_end = io::ScanEndTime(scan);
+    if (!eskf_.initialized()) {
+      if (!finishing) return;
+      Skip(&stats_.scans_unmatched, "scan at " + std::to_string(t_end) + " s: no IMU to initialise: skipped");
+      pending_.pop_front();
+      continue;
+    }
+    const bool imu_ready = last_imu_time_s_ >= t_end;
+    const bool encoder_ready = !plugin_->UsesEncoder() || (!encoder_.empty() && encoder_.end_time_s() >= t_end);
+    const double newest = std::max(last_imu_time_s_, encoder_.empty() ? -1e300 : encoder_.end_time_s());
+    if (!finishing && !(imu_ready && encoder_ready) && newest - t_end < options_.max_scan_latency_s) return;
+    if (plugin_->UsesEncoder() && !encoder_ready && !finishing) {
+      Skip(&stats_.scans_no_encoder,
+           "scan ending at " + std::to_string(t_end) + " s has no encoder coverage: skipped");
+    } else if (t_end < last_scan_end_s_) {
+      Skip(&stats_.scans_out_of_order, "scan ending at " + std::to_string(t_end) +
+                                           " s ends before the previous scan: skipped");
+    } else {
+      ProcessScan(scan);
+    }
+    pending_.pop_front();
+  }
+}
+
+void Localizer::ProcessScan(const io::ScanRecord& scan) {
+  const double t_end = io::ScanEndTime(scan);
+  RawScan raw;
+  if (const auto* line = std::get_if<LineScan>(&scan)) {
+    try {
+      LineScanConversion converted = LineScanToRawScan(*line);
+      stats_.beams_dropped += converted.dropped;
+      raw = std::move(converted.scan);
+    } catch (const InputError& e) {
+      Skip(&stats_.scans_bad_input, "line scan at " + std::to_string(t_end) + " s: " + e.what());
+      return;
+    }
+    if (raw.points.empty()) {
+      Skip(&stats_.scans_bad_input, "line scan at " + std::to_string(t_end) + " s has no valid return");
+      return;
+    }
+  } else {
+    raw = std::get<RawScan>(scan);
+  }
+  if (eskf_.state().time_s < t_end) {
+    eskf_.PropagateTo(t_end);
+    history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
+  }
+  BodyScan body;
+  try {
+    body = plugin_->Deskew(raw, encoder_, [this](double t) { return history_.At(t); });
+  } catch (const InputError& e) {
+    Skip(&stats_.scans_bad_input, "scan at " + std::to_string(t_end) + " s: " + e.what());
+    return;
+  }
+  last_scan_end_s_ = t_end;
+  std::vector<Eigen::Vector3f> points_body;
+  points_body.reserve(body.points.size());
+  for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
+
+  // GPF -> pseudo measurement -> ESKF update (DESIGN.md 1.3). The state may
+  // be a few ms past t_end (waiting for the encoder): the pose error is
+  // applied to the current state.
+  const Eigen::Isometry3d T_predicted = history_.At(t_end);
+  matching::Vector6d correction = matching::Vector6d::Zero();
+  bool matched = false;
+  std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
+  if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
+    const matching::GpfResult match =
+        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body, FieldDistanceQuery(field));
+    if (match.ok) {
+      const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
+      if (update.applied) {
+        correction = update.error_correction;
+        matched = true;
+      }
+    }
+  }
+  ++(matched ? stats_.scans_matched : stats_.scans_unmatched);
+  const Eigen::Isometry3d T_map_body = ApplyCorrection(T_predicted, correction);
+  if (matched) {
+    history_.Clear();
+    if (t_end < eskf_.state().time_s) history_.Add(t_end, T_map_body);
+    history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
+  }
+  poses_.push_back({t_end, T_map_body, matched, static_cast<int>(points_body.size())});
+
+  const Eigen::Vector3f sensor_map =
+      (T_map_body * plugin_->BodyFromLidarAt(encoder_, t_end).translation()).cast<float>();
+  if (options_.localize_only) {
+    map_->UpdateSensorPosition(sensor_map);
+    return;
+  }
+  std::vector<Eigen::Vector3f> points_map;
+  points_map.reserve(points_body.size());
+  const Eigen::Isometry3f T = T_map_body.cast<float>();
+  for (const auto& p : points_body) points_map.push_back(T * p);
+  if (accumulator_.Add(points_map, sensor_map)) {
+    Eigen::Vector3f origin;
+    std::vector<Eigen::Vector3f> scan3d = accumulator_.Take(&origin);
+    map_->InsertScan(std::move(scan3d), origin);
+    ++stats_.map_insertions;
+  }
+}
+
+}  // namespace unimap::pipeline

@@ -1,0 +1,97 @@
+#pragma once
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "estimation/Eskf.hpp"
+#include "io/ScanRecord.hpp"
+#include "map/DistanceMap.hpp"
+#include "matching/GaussianParticleFilter.hpp"
+#include "pipeline/LocalizerOptions.hpp"
+#include "pipeline/PoseHistory.hpp"
+#include "pipeline/ScanAccumulator.hpp"
+#include "unimap/EncoderTrack.hpp"
+#include "unimap/PayloadPlugin.hpp"
+
+namespace unimap::pipeline {
+
+// The localised pose of one scan.
+struct ScanPose {
+  double time_s = 0.0;                                      // the scan's reference (end) time
+  Eigen::Isometry3d T_map_body = Eigen::Isometry3d::Identity();
+  bool matched = false;                                     // a GPF update was applied
+  int points = 0;                                           // deskewed body points
+};
+
+// Counts of what happened to the input (skips are counted, never fatal).
+struct LocalizerStats {
+  std::size_t imu_samples = 0;
+  std::size_t imu_out_of_order = 0;   // not after the previous sample: skipped
+  std::size_t imu_gaps = 0;           // gaps above max_imu_gap_s bridged by holding the last sample
+  std::size_t encoder_rejected = 0;   // not after the previous sample or non-finite: skipped
+  std::size_t scans = 0;              // scans received
+  std::size_t scans_matched = 0;      // with a GPF update
+  std::size_t scans_unmatched = 0;    // localised by the IMU only (no map yet, too few points, GPF failure)
+  std::size_t scans_bad_input = 0;    // rejected by the payload (NaN points, times, ...): skipped
+  std::size_t scans_no_encoder = 0;   // never covered by encoder samples: skipped
+  std::size_t scans_out_of_order = 0;  // ending before an already processed scan: skipped
+  std::size_t beams_dropped = 0;      // 2D beams without a valid return
+  std::size_t map_insertions = 0;     // 3D scans inserted into the map
+  std::vector<std::string> messages;  // the first few skip reasons, for the log
+};
+
+// Odometry-mode localiser (DESIGN.md 1.1-1.3): IMU -> ESKF prediction; each
+// scan is deskewed by the payload plugin, matched by the GPF against the
+// distance map, and its pseudo measurement updates the ESKF; every N scans
+// form a 3D scan inserted into the map (unless localising in a prior map).
+class Localizer {
+ public:
+  // prior_map: localise in a fixed map (options.localize_only) instead of
+  // building one. initial_pose: T_map_body at the end of the static window
+  // (default: origin, attitude from gravity, yaw 0).
+  Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
+            std::unique_ptr<map::DistanceMap> prior_map = nullptr,
+            std::optional<Eigen::Isometry3d> initial_pose = std::nullopt);
+  ~Localizer();
+
+  // Data in time order (as DatasetReader::NextEvent delivers it).
+  void AddImu(const ImuSample& sample);
+  void AddEncoder(const EncoderSample& sample);
+  void AddScan(io::ScanRecord scan);
+  // Processes every scan still waiting (end of data).
+  void Finish();
+
+  // Poses produced since the last call, in time order.
+  std::vector<ScanPose> TakePoses();
+  const LocalizerStats& stats() const { return stats_; }
+  bool initialized() const { return eskf_.initialized(); }
+  map::DistanceMap& distance_map() { return *map_; }
+
+ private:
+  void TryInitialize();
+  void ProcessReadyScans(bool finishing);
+  void ProcessScan(const io::ScanRecord& scan);
+  void Skip(std::size_t* counter, const std::string& message);
+
+  LocalizerOptions options_;
+  std::shared_ptr<PayloadPlugin> plugin_;
+  std::unique_ptr<map::DistanceMap> map_;
+  std::optional<Eigen::Isometry3d> initial_pose_;
+  estimation::Eskf eskf_;
+  matching::GaussianParticleFilter gpf_;
+  EncoderTrack encoder_;
+  PoseHistory history_;
+  ScanAccumulator accumulator_;
+  std::vector<ImuSample> init_imu_;
+  std::deque<io::ScanRecord> pending_;
+  double last_imu_time_s_ = -1e300;
+  double last_scan_end_s_ = -1e300;
+  std::vector<ScanPose> poses_;
+  LocalizerStats stats_;
+};
+
+}  // namespace unimap::pipeline

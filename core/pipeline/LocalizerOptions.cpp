@@ -1,0 +1,41 @@
+#include "pipeline/LocalizerOptions.hpp"
+
+namespace unimap::pipeline {
+
+bool LocalizerOptions::IsValid(std::string* why) const {
+  std::string local_why;
+  if (why == nullptr) why = &local_why;
+  std::string inner;
+  if (!eskf.IsValid(&inner)) {
+    *why = "eskf: " + inner;
+    return false;
+  }
+  if (!gpf.IsValid(&inner)) {
+    *why = "gpf: " + inner;
+    return false;
+  }
+  if (!map.IsValid(&inner)) {
+    *why = "map: " + inner;
+    return false;
+  }
+  if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
+      !(max_scan_latency_s > 0.0)) {
+    *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
+           "max_scan_latency_s > 0";
+    return false;
+  }
+  return true;
+}
+
+LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
+  LocalizerOptions o;
+  o.scans_per_3d_scan = core.scans_per_3d_scan;
+  o.eskf.sigma_accel_m_s2 = core.sigma_accel_m_s2;
+  o.eskf.sigma_gyro_rad_s = core.sigma_gyro_rad_s;
+  o.map.resolution_m = core.distance_map_resolution_m;
+  o.map.max_range_m = core.distance_map_max_range_m;
+  o.gpf.voxel_size_m = core.distance_map_resolution_m;
+  return o;
+}
+
+}  // namespace unimap::pipeline

@@ -1,0 +1,28 @@
+#pragma once
+#include <string>
+
+#include "estimation/EskfOptions.hpp"
+#include "map/DistanceMapOptions.hpp"
+#include "matching/GpfOptions.hpp"
+#include "unimap/CoreParameters.hpp"
+
+namespace unimap::pipeline {
+
+// Everything the localiser needs; per-platform values come from the
+// payload's CoreParameters (FromPlatform), the rest are shared defaults.
+struct LocalizerOptions {
+  estimation::EskfOptions eskf;     // IMU noise (sigma_a, sigma_g) and initial uncertainty
+  matching::GpfOptions gpf;         // particles, likelihood, downsampling
+  map::DistanceMapOptions map;      // resolution and box (distance-map max range)
+  int scans_per_3d_scan = 1;        // N: scans accumulated before a map insertion
+  double static_init_s = 1.0;       // IMU window at the start used to align with gravity (s)
+  int min_points_to_match = 30;     // scans with fewer body points are inserted unmatched
+  bool localize_only = false;       // true: a prior map is given and never modified
+  double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
+
+  bool IsValid(std::string* why) const;
+  // Shared defaults with the platform's N, sigmas, resolution and max range.
+  static LocalizerOptions FromPlatform(const CoreParameters& core);
+};
+
+}  // namespace unimap::pipeline

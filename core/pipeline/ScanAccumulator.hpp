@@ -1,0 +1,28 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace unimap::pipeline {
+
+// First stage of the paper's two-stage accumulation: N scans (map frame)
+// form one 3D scan for map insertion.
+class ScanAccumulator {
+ public:
+  explicit ScanAccumulator(int scans_per_3d_scan) : n_(scans_per_3d_scan) {}
+
+  // Adds one scan's points (map frame) and the sensor position it was taken
+  // from; returns true when N scans are collected (then call Take).
+  bool Add(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& sensor_map);
+  // The 3D scan and the mean sensor position; resets the accumulator.
+  std::vector<Eigen::Vector3f> Take(Eigen::Vector3f* sensor_map);
+  int count() const { return count_; }
+
+ private:
+  int n_;
+  int count_ = 0;
+  std::vector<Eigen::Vector3f> points_;
+  Eigen::Vector3f sensor_sum_ = Eigen::Vector3f::Zero();
+};
+
+}  // namespace unimap::pipeline

@@ -1,0 +1,113 @@
+#include "map/DistanceField.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "unimap/Errors.hpp"
+
+namespace unimap::map {
+namespace {
+
+using V3 = Eigen::Vector3f;
+
+// A 3 x 4 x 5 grid of 0.5 m cells from (-1, 0, 2) holding a linear field
+// f(p) = 0.1 + 0.05 x + 0.02 y + 0.03 z (cell centres), clamp 2 m.
+constexpr float kClamp = 2.0f;
+const V3 kOrigin(-1.0f, 0.0f, 2.0f);
+const Eigen::Vector3i kDims(3, 4, 5);
+
+float Linear(const V3& p) { return 0.1f + 0.05f * p.x() + 0.02f * p.y() + 0.03f * p.z(); }
+
+DistanceField LinearField() {
+  std::vector<std::uint16_t> cells;
+  for (int x = 0; x < kDims.x(); ++x) {
+    for (int y = 0; y < kDims.y(); ++y) {
+      for (int z = 0; z < kDims.z(); ++z) {
+        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::Quantise(Linear(centre), kClamp));
+      }
+    }
+  }
+  return DistanceField(kOrigin, kDims, 0.5f, kClamp, std::move(cells), 7);
+}
+
+TEST(DistanceField, LookupReturnsTheValueOfTheVoxelContainingThePoint) {
+  const DistanceField field = LinearField();
+  const float step = kClamp / 65535.0f;
+  for (int x = 0; x < kDims.x(); ++x) {
+    for (int y = 0; y < kDims.y(); ++y) {
+      for (int z = 0; z < kDims.z(); ++z) {
+        const V3 centre = field.CellCentre(Eigen::Vector3i(x, y, z));
+        // Anywhere inside the voxel, not only at its centre.
+        const V3 corner = centre + V3(0.24f, -0.24f, 0.2f);
+        EXPECT_NEAR(field.Distance(centre), Linear(centre), step);
+        EXPECT_NEAR(field.Distance(corner), Linear(centre), step);
+        EXPECT_NEAR(field.CellDistance(Eigen::Vector3i(x, y, z)), Linear(centre), step);
+      }
+    }
+  }
+  EXPECT_EQ(field.sequence(), 7u);
+  EXPECT_EQ(field.CellCount(), 60u);
+  EXPECT_EQ(field.MemoryBytes(), 120u);
+  EXPECT_TRUE(field.box_max().isApprox(V3(0.5f, 2.0f, 4.5f)));
+}
+
+TEST(DistanceField, OutsideTheBoxAndNaNReadTheClamp) {
+  const DistanceField field = LinearField();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FLOAT_EQ(field.Distance(V3(-1.01f, 0.1f, 2.1f)), kClamp);  // just below x
+  EXPECT_FLOAT_EQ(field.Distance(V3(0.5f, 0.1f, 2.1f)), kClamp);    // max face is open
+  EXPECT_FLOAT_EQ(field.Distance(V3(0.0f, 2.0f, 2.1f)), kClamp);
+  EXPECT_FLOAT_EQ(field.Distance(V3(0.0f, 1.0f, 4.5f)), kClamp);
+  EXPECT_FLOAT_EQ(field.Distance(V3(nan, 1.0f, 3.0f)), kClamp);
+  EXPECT_FALSE(field.Contains(V3(nan, 1.0f, 3.0f)));
+  EXPECT_TRUE(field.Contains(V3(-1.0f, 0.0f, 2.0f)));  // min face is closed
+  EXPECT_NEAR(field.Distance(V3(-1.0f, 0.0f, 2.0f)), Linear(V3(-0.75f, 0.25f, 2.25f)), 1e-4f);
+  EXPECT_FLOAT_EQ(field.CellDistance(Eigen::Vector3i(3, 0, 0)), kClamp);
+  EXPECT_FLOAT_EQ(DistanceField(1.5f).Distance(V3::Zero()), 1.5f);
+}
+
+TEST(DistanceField, QuantisationIsExactToOneStepAndSaturatesAtTheClamp) {
+  EXPECT_EQ(DistanceField::Quantise(0.0f, 1.0f), 0u);
+  EXPECT_EQ(DistanceField::Quantise(-0.5f, 1.0f), 0u);
+  EXPECT_EQ(DistanceField::Quantise(1.0f, 1.0f), DistanceField::kMaxSteps);
+  EXPECT_EQ(DistanceField::Quantise(7.0f, 1.0f), DistanceField::kMaxSteps);
+  EXPECT_EQ(DistanceField::Quantise(std::numeric_limits<float>::quiet_NaN(), 1.0f),
+            DistanceField::kMaxSteps);
+  EXPECT_EQ(DistanceField::Quantise(0.5f, 1.0f), 32768u);  // round(32767.5)
+}
+
+TEST(DistanceField, TrilinearInterpolationIsExactOnALinearField) {
+  const DistanceField field = LinearField();
+  // Inside the hull of the voxel centres, a linear field interpolates exactly.
+  const V3 gradient_truth(0.05f, 0.02f, 0.03f);
+  for (const V3& p : {V3(-0.6f, 0.4f, 2.4f), V3(0.1f, 1.6f, 4.1f), V3(-0.3f, 1.0f, 3.3f)}) {
+    V3 gradient;
+    EXPECT_NEAR(field.DistanceTrilinear(p, &gradient), Linear(p), 1e-4f) << p.transpose();
+    EXPECT_LT((gradient - gradient_truth).cwiseAbs().maxCoeff(), 2e-4f) << gradient.transpose();
+    EXPECT_NEAR(field.DistanceTrilinear(p, nullptr), Linear(p), 1e-4f);
+  }
+  // Between the last centres and the box face, the missing neighbours count
+  // as the clamp: 30 % clamp + 70 % the first layer along x.
+  const V3 edge(-0.9f, 1.0f, 3.3f);
+  EXPECT_NEAR(field.DistanceTrilinear(edge, nullptr),
+              0.3f * kClamp + 0.7f * Linear(V3(-0.75f, 1.0f, 3.3f)), 1e-4f);
+  V3 gradient = V3::Ones();
+  EXPECT_FLOAT_EQ(field.DistanceTrilinear(V3(9.0f, 0.0f, 0.0f), &gradient), kClamp);
+  EXPECT_TRUE(gradient.isZero());
+}
+
+TEST(DistanceField, InconsistentConstructionIsAnInputError) {
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, kClamp, std::vector<std::uint16_t>(59), 0),
+               InputError);
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.0f, kClamp, std::vector<std::uint16_t>(60), 0),
+               InputError);
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, -1.0f, std::vector<std::uint16_t>(60), 0),
+               InputError);
+  EXPECT_THROW(DistanceField(std::numeric_limits<float>::infinity()), InputError);
+}
+
+}  // namespace
+}  // namespace unimap::map

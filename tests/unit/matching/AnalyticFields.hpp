@@ -1,0 +1,41 @@
+#pragma once
+// Distance fields with closed forms, for matcher tests.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "matching/DistanceQuery.hpp"
+
+namespace unimap::matching::testing {
+
+// Inside an axis-aligned box room [-hx, hx] x [-hy, hy] x [-hz, hz]: distance to the nearest wall.
+class BoxRoomField final : public DistanceQuery {
+ public:
+  BoxRoomField(float hx, float hy, float hz) : h_(hx, hy, hz) {}
+  void Distances(const Eigen::Vector3f* p, int n, float* out) const override {
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector3f gap = h_ - p[i].cwiseAbs();
+      out[i] = std::abs(gap.minCoeff());
+    }
+  }
+  // Points on the walls (ceiling and floor included), fixed seed.
+  std::vector<Eigen::Vector3f> SampleWalls(int n, unsigned seed) const {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> face(0, 5);
+    std::vector<Eigen::Vector3f> out;
+    for (int i = 0; i < n; ++i) {
+      Eigen::Vector3f p(u(rng) * h_.x(), u(rng) * h_.y(), u(rng) * h_.z());
+      const int f = face(rng);
+      p(f / 2) = (f % 2 == 0 ? 1.0f : -1.0f) * h_(f / 2);
+      out.push_back(p);
+    }
+    return out;
+  }
+
+ private:
+  Eigen::Vector3f h_;
+};
+
+}  // namespace unimap::matching::testing

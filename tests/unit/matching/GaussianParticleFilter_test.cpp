@@ -1,0 +1,109 @@
+#include "matching/GaussianParticleFilter.hpp"
+
+#include <gtest/gtest.h>
+
+#include "AnalyticFields.hpp"
+#include "estimation/So3.hpp"
+
+namespace unimap::matching {
+namespace {
+
+struct Case {
+  Eigen::Isometry3d T_true = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d T_predicted = Eigen::Isometry3d::Identity();
+  std::vector<Eigen::Vector3f> points_body;
+};
+
+// A body in a 10 x 6 x 4 m room; the prediction is off by a known error.
+Case MakeCase(const testing::BoxRoomField& room, const Vector6d& prediction_error) {
+  Case c;
+  c.T_true.translation() = Eigen::Vector3d(0.7, -0.4, 0.2);
+  c.T_true.linear() = estimation::ExpQ(Eigen::Vector3d(0.02, -0.03, 0.4)).toRotationMatrix();
+  c.T_predicted = c.T_true;
+  c.T_predicted.translation() -= prediction_error.head<3>();
+  c.T_predicted.linear() = c.T_true.linear() * estimation::ExpQ(-prediction_error.tail<3>()).toRotationMatrix();
+  const Eigen::Isometry3f T_body_map = c.T_true.inverse().cast<float>();
+  for (const auto& p : room.SampleWalls(3000, 4)) c.points_body.push_back(T_body_map * p);
+  return c;
+}
+
+// Error of the predicted pose after applying a correction [dp, dtheta].
+double PositionErrorAfter(const Case& c, const Vector6d& correction) {
+  return (c.T_predicted.translation() + correction.head<3>() - c.T_true.translation()).norm();
+}
+
+TEST(GaussianParticleFilter, PosteriorMovesToTheTruePose) {
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);
+  Vector6d error;
+  error << 0.06, -0.05, 0.04, 0.01, -0.01, 0.02;
+  const Case c = MakeCase(room, error);
+  Matrix6d prior = Matrix6d::Zero();
+  prior.diagonal() << 0.08, 0.08, 0.08, 0.02, 0.02, 0.02;
+  prior = prior.array().square().matrix();
+  GpfOptions options;
+  options.num_particles = 1000;
+  GaussianParticleFilter gpf(options);
+  const GpfResult r = gpf.Match(c.T_predicted, prior, c.points_body, room);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_LE(r.points_used, options.max_points);
+  // The prediction was 9 cm off; the posterior mean must be much closer.
+  EXPECT_GT(PositionErrorAfter(c, Vector6d::Zero()), 0.085);
+  EXPECT_LT(PositionErrorAfter(c, r.posterior_mean), 0.02);
+  // Rotation error at least halved, and the truth consistent with the
+  // posterior (Mahalanobis^2 below the 99.9 % chi-square bound, 6 dof).
+  EXPECT_LT((r.posterior_mean.tail<3>() - error.tail<3>()).norm(), 0.5 * error.tail<3>().norm());
+  const Vector6d miss = error - r.posterior_mean;
+  EXPECT_LT(miss.dot(r.posterior_covariance.ldlt().solve(miss)), 22.46);
+  // The posterior is tighter than the prior in every direction.
+  for (int i = 0; i < 6; ++i) EXPECT_LT(r.posterior_covariance(i, i), r.sample_covariance(i, i)) << i;
+  EXPECT_GT(r.effective_sample_size, 5.0);
+}
+
+TEST(GaussianParticleFilter, DeterministicForASeedAndThreadCount) {
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);
+  Vector6d error;
+  error << 0.03, 0.02, -0.01, 0.0, 0.01, -0.01;
+  const Case c = MakeCase(room, error);
+  const Matrix6d prior = Matrix6d::Identity() * 0.0025;
+  GpfOptions options;
+  GaussianParticleFilter a(options), b(options);
+  options.threads = 2;
+  GaussianParticleFilter parallel(options);
+  const GpfResult ra = a.Match(c.T_predicted, prior, c.points_body, room);
+  const GpfResult rb = b.Match(c.T_predicted, prior, c.points_body, room);
+  const GpfResult rp = parallel.Match(c.T_predicted, prior, c.points_body, room);
+  EXPECT_EQ(ra.posterior_mean, rb.posterior_mean);
+  EXPECT_EQ(ra.posterior_covariance, rb.posterior_covariance);
+  EXPECT_EQ(ra.posterior_mean, rp.posterior_mean);
+  EXPECT_EQ(ra.measurement.z, rp.measurement.z);
+}
+
+TEST(GaussianParticleFilter, PlanarModeLeavesOtherDimensionsAlone) {
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);
+  Vector6d error;
+  error << 0.05, -0.04, 0.0, 0.0, 0.0, 0.02;
+  const Case c = MakeCase(room, error);
+  Matrix6d prior = Matrix6d::Identity() * 0.0036;
+  GpfOptions options;
+  options.planar = true;
+  GaussianParticleFilter gpf(options);
+  const GpfResult r = gpf.Match(c.T_predicted, prior, c.points_body, room);
+  ASSERT_TRUE(r.ok) << r.reason;
+  for (int i : {2, 3, 4}) EXPECT_EQ(r.posterior_mean(i), 0.0);
+  // No information on z, roll, pitch: R there dwarfs the prior, so the
+  // Kalman gain K = P / (P + R) is below 1e-3.
+  for (int i : {2, 3, 4}) EXPECT_GT(r.measurement.R(i, i), 1e3 * prior(i, i)) << i;
+  EXPECT_LT(std::abs(r.posterior_mean(0) - 0.05), 0.015);
+  EXPECT_LT(std::abs(r.posterior_mean(5) - 0.02), 0.006);
+}
+
+TEST(GaussianParticleFilter, EmptyScanIsAResultNotACrash) {
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);
+  GaussianParticleFilter gpf(GpfOptions{});
+  const GpfResult r = gpf.Match(Eigen::Isometry3d::Identity(), Matrix6d::Identity(), {}, room);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.reason, "no points to match");
+}
+
+}  // namespace
+}  // namespace unimap::matching
