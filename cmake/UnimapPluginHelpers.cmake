@@ -25,7 +25,8 @@ function(unimap_add_payload_plugin name)
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON
     PREFIX "lib"
-    OUTPUT_NAME "unimap_payload_${name}")
+    OUTPUT_NAME "unimap_payload_${name}"
+    INSTALL_RPATH "$ORIGIN/../..")
   if(DEFINED UNIMAP_PLUGIN_BUILD_DIR)
     set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${UNIMAP_PLUGIN_BUILD_DIR}")
   endif()

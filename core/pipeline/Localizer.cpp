@@ -230,6 +230,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     std::vector<Eigen::Vector3f> scan3d = accumulator_.Take(&origin);
     map_->InsertScan(std::move(scan3d), origin);
     ++stats_.map_insertions;
+    if (options_.wait_for_map) map_->WaitForUpdates();
   }
 }
 

@@ -122,7 +122,7 @@ SimulationSummary Simulator::Run() {
   double duration = trajectory.end_time_s();
   if (options_.duration_s) {
     if (!(*options_.duration_s > 0.0 && *options_.duration_s <= duration)) {
-      throw ConfigError(s.file, 0, "duration",
+      throw ConfigError(s.file, 0, "--duration-s",
                         "requested " + std::to_string(*options_.duration_s) + " s; must be in (0, " +
                             std::to_string(duration) + "] s, the trajectory's duration");
     }

@@ -1,9 +1,200 @@
-// Placeholder: registers nothing until `unimap bench` is implemented
-// (only implemented subcommands are listed).
+// `unimap bench`: speed figures, written to docs/benchmarks.md. Each
+// benchmark is a BenchmarkCase in Cases(); add a case to add a section.
+#include <sched.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
 #include "Commands.hpp"
+#include "Scenario.hpp"
+#include "Simulator.hpp"
+#include "unimap/Errors.hpp"
 
 namespace unimap::cli {
+namespace {
 
-void AddBenchCommand(CLI::App* /*app*/) {}
+struct BenchOptions {
+  std::string out = "docs/benchmarks.md";  // report to (re)write
+  std::string configs = "configs";         // folder with scenarios/ and platforms/
+  bool quick = false;                      // shortened runs, for a smoke test
+};
+
+// One measured figure of a benchmark.
+struct BenchmarkFigure {
+  std::string name;   // "wall time"
+  std::string value;  // "11.5 s"
+};
+
+// One benchmark: what it measures and how to run it.
+struct BenchmarkCase {
+  std::string name;         // section title, stable across runs
+  std::string description;  // one paragraph: what runs, on what data
+  std::function<std::vector<BenchmarkFigure>(const BenchOptions&)> run;  // throws on failure
+};
+
+std::string Fixed(double value, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+
+// Simulates a scenario with its default payload into a temporary folder.
+std::vector<BenchmarkFigure> SimulateScenario(const BenchOptions& options, const std::string& scenario_name) {
+  const std::filesystem::path file = std::filesystem::path(options.configs) / "scenarios" / (scenario_name + ".yaml");
+  const sim::Scenario scenario = sim::LoadScenario(file);
+  sim::SimulationOptions run;
+  run.out_dir = std::filesystem::temp_directory_path() / ("unimap-bench-" + std::to_string(getpid()));
+  if (options.quick) run.duration_s = 60.0;
+  sim::SimulationSummary s;
+  try {
+    s = sim::Simulator(scenario, run).Run();
+  } catch (...) {
+    std::filesystem::remove_all(run.out_dir);
+    throw;
+  }
+  std::filesystem::remove_all(run.out_dir);
+  const double rays = static_cast<double>(s.rays);
+  return {{"payload", s.payload + " (" + s.payload_source + ")"},
+          {"data duration", Fixed(s.duration_s, 1) + " s"},
+          {"path length", Fixed(s.path_length_m, 1) + " m, max speed " + Fixed(s.max_speed_m_s, 3) + " m/s"},
+          {"scans / rays", std::to_string(s.scans) + " / " + std::to_string(s.rays)},
+          {"dataset size", Fixed(static_cast<double>(s.bytes) / 1e6, 1) + " MB"},
+          {"wall time", Fixed(s.wall_s, 2) + " s"},
+          {"CPU time", Fixed(s.cpu_s, 2) + " s"},
+          {"real-time factor (data duration / wall time)", Fixed(s.duration_s / s.wall_s, 1)},
+          {"rays per second", Fixed(rays / s.wall_s / 1e6, 2) + " M"}};
+}
+
+std::vector<BenchmarkCase> Cases() {
+  return {
+      {"simulate: tunnel, rotating Hokuyo",
+       "`unimap simulate --scenario configs/scenarios/tunnel.yaml`: the paper's 15-minute tunnel "
+       "fly-through with the rotating Hokuyo (40 lines/s x 1081 beams, every beam cast from the "
+       "LiDAR pose at its own firing time), IMU at 200 Hz, encoder at 100 Hz, written to disk. "
+       "Target: under 60 s.",
+       [](const BenchOptions& o) { return SimulateScenario(o, "tunnel"); }},
+  };
+}
+
+// First "model name" of /proc/cpuinfo, or "unknown".
+std::string CpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  }
+  return "unknown";
+}
+
+// Output of a shell command (first line), or "" when it fails.
+std::string CommandOutput(const std::string& command) {
+  std::FILE* pipe = popen((command + " 2>/dev/null").c_str(), "r");
+  if (pipe == nullptr) return "";
+  char buffer[256];
+  std::string out;
+  if (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out = buffer;
+  const int status = pclose(pipe);
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return status == 0 ? out : "";
+}
+
+std::string GitCommit() {
+  std::string commit = CommandOutput("git rev-parse HEAD");
+  if (commit.empty()) return "unknown";
+  if (!CommandOutput("git status --porcelain --untracked-files=no").empty()) commit += " (with uncommitted changes)";
+  return commit;
+}
+
+std::string UtcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", &utc);
+  return text;
+}
+
+// Keeps this process on the CPU it runs on: every figure is for one core.
+bool PinToOneCore() {
+  const int cpu = sched_getcpu();
+  if (cpu < 0) return false;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  return sched_setaffinity(0, sizeof set, &set) == 0;
+}
+
+void WriteAtomically(const std::filesystem::path& file, const std::string& text) {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  const std::filesystem::path partial = file.string() + ".partial";
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << text;
+    if (!out.flush()) throw InputError(partial.string() + ": cannot write");
+  }
+  std::filesystem::rename(partial, file);
+}
+
+int RunBench(const BenchOptions& options) {
+  const bool pinned = PinToOneCore();
+  std::ostringstream md;
+  md << "# Benchmarks\n\n"
+     << "Generated by `unimap bench" << (options.quick ? " --quick" : "") << "`; do not edit by hand, rerun "
+     << "it to refresh. Every figure is measured on one core (the process is pinned to one CPU).\n\n"
+     << "| | |\n|---|---|\n"
+     << "| machine | " << CpuModel() << ", " << std::thread::hardware_concurrency() << " cores"
+     << (pinned ? ", run pinned to one" : ", NOT pinned (sched_setaffinity failed)") << " |\n"
+     << "| commit | " << GitCommit() << " |\n"
+     << "| date | " << UtcNow() << " |\n"
+     << "| mode | " << (options.quick ? "quick (simulations cut to 60 s of data)" : "full") << " |\n";
+  int failures = 0;
+  for (const BenchmarkCase& c : Cases()) {
+    std::cout << "running: " << c.name << " ..." << std::flush;
+    md << "\n## " << c.name << "\n\n" << c.description << "\n\n";
+    try {
+      const std::vector<BenchmarkFigure> figures = c.run(options);
+      md << "| figure | value |\n|---|---|\n";
+      for (const BenchmarkFigure& f : figures) md << "| " << f.name << " | " << f.value << " |\n";
+      std::cout << " done\n";
+      for (const BenchmarkFigure& f : figures) std::cout << "  " << f.name << ": " << f.value << '\n';
+    } catch (const std::exception& e) {
+      ++failures;
+      md << "**failed:** " << e.what() << "\n";
+      std::cout << " FAILED: " << e.what() << '\n';
+    }
+  }
+  WriteAtomically(options.out, md.str());
+  std::cout << "wrote " << options.out << '\n';
+  return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void AddBenchCommand(CLI::App* app) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app->add_subcommand("bench", "Run the speed benchmarks and rewrite docs/benchmarks.md");
+  cmd->add_option("--out", options->out, "Report to write (default docs/benchmarks.md)");
+  cmd->add_option("--configs", options->configs, "Folder holding scenarios/ and platforms/ (default configs)")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_flag("--quick", options->quick, "Short runs (60 s of simulated data) for a smoke test");
+  cmd->callback([options]() {
+    const int code = RunBench(*options);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
 
 }  // namespace unimap::cli

@@ -54,6 +54,7 @@ void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_f
 }
 
 int RunSimulate(const SimulateOptions& options) {
+  const bool show_progress = !options.quiet && isatty(STDERR_FILENO);
   try {
     const sim::Scenario scenario = sim::LoadScenario(options.scenario);
     sim::SimulationOptions run;
@@ -61,7 +62,7 @@ int RunSimulate(const SimulateOptions& options) {
     run.seed = options.seed;
     run.payload = options.payload;
     run.duration_s = options.duration_s;
-    if (!options.quiet && isatty(STDERR_FILENO)) {
+    if (show_progress) {
       run.progress = [](double fraction) {
         std::fprintf(stderr, "\rsimulating %3d %%", static_cast<int>(100.0 * fraction));
         if (fraction >= 1.0) std::fprintf(stderr, "\n");
@@ -71,8 +72,11 @@ int RunSimulate(const SimulateOptions& options) {
     PrintSummary(summary, options.scenario, options.out);
     return 0;
   } catch (const Error& e) {
-    std::cerr << "\nerror: " << e.what() << '\n';
+    std::cerr << (show_progress ? "\n" : "") << "error: " << e.what() << '\n';
     return 2;
+  } catch (const std::exception& e) {  // e.g. a file system failure while writing
+    std::cerr << (show_progress ? "\n" : "") << "error: " << e.what() << '\n';
+    return 1;
   }
 }
 

@@ -175,7 +175,7 @@ TEST(ScenarioFiles, PatioIsAnOutdoorCourtyardWithTreesAndUnevenGround) {
   ASSERT_TRUE(east && west);
   EXPECT_NEAR(east->range_m + west->range_m, 40.0, 1e-9);
   const WaypointTrajectory traj = s.MakeTrajectory();
-  EXPECT_NEAR(traj.PathLength(traj.end_time_s()), 100.0, 1e-9);
+  EXPECT_NEAR(traj.PathLength(traj.end_time_s()), 100.0, 0.1);  // mid-side waypoints 0.2 m higher or lower
 }
 
 }  // namespace

@@ -93,14 +93,14 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
 
   e = ParseError(With("rate_hz: 100", "rate_hz: fast"));
   EXPECT_EQ(e.key(), "imu.rate_hz");
-  EXPECT_EQ(e.line(), 7);
+  EXPECT_EQ(e.line(), 6);
 
   e = ParseError(With("max_speed_m_s: 0.5", "max_speed_m_s: -1"));
   EXPECT_EQ(e.key(), "trajectory.max_speed_m_s");
 
   e = ParseError(With("- {position: [2, 0, 1]}", "- {position: [2, 0]}"));
   EXPECT_EQ(e.key(), "trajectory.waypoints[1].position");
-  EXPECT_EQ(e.line(), 18);
+  EXPECT_EQ(e.line(), 17);
 
   e = ParseError(With("payload: ../platforms/rotating_hokuyo.yaml\n", ""));
   EXPECT_EQ(e.key(), "payload");
