@@ -6,17 +6,25 @@
 
 namespace unimap::pipeline {
 
-// The GPF's view of a distance-map snapshot (keeps the snapshot alive).
+// The GPF's view of a distance-map snapshot (keeps the snapshot alive):
+// trilinear between voxel centres (smooth below the voxel size, so particles
+// closer than a voxel are told apart) or the containing voxel's value.
 class FieldDistanceQuery final : public matching::DistanceQuery {
  public:
-  explicit FieldDistanceQuery(std::shared_ptr<const map::DistanceField> field) : field_(std::move(field)) {}
+  FieldDistanceQuery(std::shared_ptr<const map::DistanceField> field, bool trilinear)
+      : field_(std::move(field)), trilinear_(trilinear) {}
   void Distances(const Eigen::Vector3f* points_map, int n, float* out) const override {
     const map::DistanceField& field = *field_;
-    for (int i = 0; i < n; ++i) out[i] = field.Distance(points_map[i]);
+    if (trilinear_) {
+      for (int i = 0; i < n; ++i) out[i] = field.DistanceTrilinear(points_map[i], nullptr);
+    } else {
+      for (int i = 0; i < n; ++i) out[i] = field.Distance(points_map[i]);
+    }
   }
 
  private:
   std::shared_ptr<const map::DistanceField> field_;
+  bool trilinear_;
 };
 
 }  // namespace unimap::pipeline

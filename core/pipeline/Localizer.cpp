@@ -197,7 +197,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const matching::GpfResult match =
-        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body, FieldDistanceQuery(field));
+        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body, FieldDistanceQuery(field, options_.trilinear_distance));
     if (match.ok) {
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       if (update.applied) {

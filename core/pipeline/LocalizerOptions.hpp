@@ -19,6 +19,7 @@ struct LocalizerOptions {
   int min_points_to_match = 30;     // scans with fewer body points are inserted unmatched
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
+  bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)
   bool wait_for_map = true;         // wait for each map insertion to be published before matching on:
                                     // offline runs then do not depend on machine speed; live use sets
                                     // false so localisation never waits (the map catches up in the background)
