@@ -11,7 +11,7 @@ struct GpfOptions {
   double clamp_distance_m = 0.5;         // distances above this count as this (outliers)
   double voxel_size_m = 0.1;             // scan downsampling voxel edge before weighting
   int max_points = 300;                  // random subset of the downsampled scan (0: all)
-  double effective_points = 50.0;        // log-likelihood scaled to this many independent points
+  double effective_points = 20.0;        // log-likelihood scaled to this many independent points
   bool planar = false;                   // sample x, y, yaw only (3-DOF)
   double min_sigma_position_m = 0.005;   // sampling covariance floor, position
   double min_sigma_rotation_rad = 0.001;  // sampling covariance floor, rotation

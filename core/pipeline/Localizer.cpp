@@ -5,6 +5,7 @@
 
 #include "estimation/So3.hpp"
 #include "estimation/StaticInitializer.hpp"
+#include "matching/VoxelDownsampler.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/LineScan.hpp"
@@ -218,7 +219,12 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   const Eigen::Vector3f sensor_map =
       (T_map_body * plugin_->BodyFromLidarAt(encoder_, t_end).translation()).cast<float>();
   if (options_.localize_only) {
-    map_->UpdateSensorPosition(sensor_map);
+    try {
+      map_->UpdateSensorPosition(sensor_map);
+      if (options_.wait_for_map) map_->WaitForUpdates();
+    } catch (const InputError& e) {
+      Skip(&stats_.map_errors, "map at " + std::to_string(t_end) + " s: " + e.what());
+    }
     return;
   }
   std::vector<Eigen::Vector3f> points_map;
@@ -227,10 +233,17 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   for (const auto& p : points_body) points_map.push_back(T * p);
   if (accumulator_.Add(points_map, sensor_map)) {
     Eigen::Vector3f origin;
-    std::vector<Eigen::Vector3f> scan3d = accumulator_.Take(&origin);
-    map_->InsertScan(std::move(scan3d), origin);
-    ++stats_.map_insertions;
-    if (options_.wait_for_map) map_->WaitForUpdates();
+    // One point per map voxel: the octree update costs per point, occupancy
+    // barely changes.
+    std::vector<Eigen::Vector3f> scan3d =
+        matching::VoxelDownsample(accumulator_.Take(&origin), options_.map.resolution_m, 0, 0);
+    try {
+      map_->InsertScan(std::move(scan3d), origin);
+      ++stats_.map_insertions;
+      if (options_.wait_for_map) map_->WaitForUpdates();
+    } catch (const InputError& e) {  // e.g. a diverged pose outside the octree's key range
+      Skip(&stats_.map_errors, "map insertion at " + std::to_string(t_end) + " s: " + e.what());
+    }
   }
 }
 

@@ -41,6 +41,7 @@ struct LocalizerStats {
   std::size_t scans_out_of_order = 0;  // ending before an already processed scan: skipped
   std::size_t beams_dropped = 0;      // 2D beams without a valid return
   std::size_t map_insertions = 0;     // 3D scans inserted into the map
+  std::size_t map_errors = 0;         // map updates refused (pose outside the map's range): skipped
   std::vector<std::string> messages;  // the first few skip reasons, for the log
 };
 

@@ -16,6 +16,8 @@ void AddEvaluateCommand(CLI::App* app);
 void AddConvertCommand(CLI::App* app);
 // `unimap run`: localise a dataset (odometry mode) and evaluate it.
 void AddRunCommand(CLI::App* app);
+// `unimap localize`: localise a dataset in a fixed prior map (.bt or .pcd) and evaluate it.
+void AddLocalizeCommand(CLI::App* app);
 // `unimap bench`: speed figures written to docs/benchmarks.md.
 void AddBenchCommand(CLI::App* app);
 

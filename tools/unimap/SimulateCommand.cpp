@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "Commands.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
+#include "WorldMap.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::cli {
@@ -69,7 +71,14 @@ int RunSimulate(const SimulateOptions& options) {
       };
     }
     const sim::SimulationSummary summary = sim::Simulator(scenario, run).Run();
+    // The true map: the world's surfaces as seen from the true trajectory (docs/simulation.md).
+    const sim::WorldMapSummary world_map =
+        sim::WriteWorldMap(scenario, sim::Simulator::LoadPayload(summary.payload_source), summary.duration_s,
+                           std::filesystem::path(options.out) / sim::kWorldMapFile);
     PrintSummary(summary, options.scenario, options.out);
+    std::cout << "true map   " << world_map.points << " points from " << world_map.viewpoints
+              << " viewpoints, rays to " << Fixed(world_map.max_range_m, 0) << " m, " << Fixed(world_map.wall_s, 2)
+              << " s: " << world_map.file.string() << '\n';
     return 0;
   } catch (const Error& e) {
     std::cerr << (show_progress ? "\n" : "") << "error: " << e.what() << '\n';

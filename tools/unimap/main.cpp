@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   unimap::cli::AddSimulateCommand(&app);
   unimap::cli::AddEvaluateCommand(&app);
   unimap::cli::AddRunCommand(&app);
+  unimap::cli::AddLocalizeCommand(&app);
   unimap::cli::AddConvertCommand(&app);
   unimap::cli::AddBenchCommand(&app);
   try {

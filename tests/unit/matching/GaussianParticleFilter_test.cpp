@@ -42,6 +42,7 @@ TEST(GaussianParticleFilter, PosteriorMovesToTheTruePose) {
   prior = prior.array().square().matrix();
   GpfOptions options;
   options.num_particles = 1000;
+  options.effective_points = 50.0;  // a sharp likelihood: one scan from a whole room
   GaussianParticleFilter gpf(options);
   const GpfResult r = gpf.Match(c.T_predicted, prior, c.points_body, room);
   ASSERT_TRUE(r.ok) << r.reason;
@@ -86,6 +87,7 @@ TEST(GaussianParticleFilter, PlanarModeLeavesOtherDimensionsAlone) {
   Matrix6d prior = Matrix6d::Identity() * 0.0036;
   GpfOptions options;
   options.planar = true;
+  options.effective_points = 50.0;  // a sharp likelihood: one scan from a whole room
   GaussianParticleFilter gpf(options);
   const GpfResult r = gpf.Match(c.T_predicted, prior, c.points_body, room);
   ASSERT_TRUE(r.ok) << r.reason;

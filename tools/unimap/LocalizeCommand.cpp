@@ -1,0 +1,224 @@
+// `unimap localize`: track the pose of a dataset in a fixed prior map (an
+// OctoMap .bt or a .pcd point cloud), write the trajectory, run.json and,
+// with ground truth, the evaluation (estimate and truth share the map frame).
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Commands.hpp"
+#include "RunOutputs.hpp"
+#include "io/DatasetReader.hpp"
+#include "io/PcdPointLoader.hpp"
+#include "io/TumTrajectory.hpp"
+#include "map/DistanceMap.hpp"
+#include "pipeline/DatasetRunner.hpp"
+#include "pipeline/Localizer.hpp"
+#include "unimap/CoreParameters.hpp"
+#include "unimap/Errors.hpp"
+#include "unimap/Platform.hpp"
+
+namespace unimap::cli {
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void OnLocalizeSigint(int /*signal*/) { g_stop.store(true); }
+
+struct LocalizeCliOptions {
+  std::string map_file;         // prior map: .bt (OctoMap) or .pcd (points)
+  std::string platform_file;    // platform YAML
+  std::string data_dir;         // dataset folder
+  std::string out_dir;          // output folder
+  std::string initial_pose;     // "x y z qx qy qz qw" (T_map_body), empty: from the truth or identity
+  double max_duration_s = 0.0;  // 0: the whole dataset
+  int threads = 1;              // GPF threads
+  bool quiet = false;           // no progress line
+};
+
+// The initial T_map_body and where it came from.
+struct InitialPose {
+  Eigen::Isometry3d T_map_body = Eigen::Isometry3d::Identity();  // also the map box's first centre
+  std::string source;  // "option", "groundtruth" or "identity"
+  // False for "identity": the localiser's default start is used instead
+  // (origin, yaw 0, roll and pitch from gravity alignment).
+  bool given = true;
+};
+
+// "x y z qx qy qz qw" (spaces or commas) -> pose; the quaternion is
+// normalised. Throws InputError for anything else.
+Eigen::Isometry3d ParsePose(const std::string& text) {
+  std::string spaced = text;
+  for (char& c : spaced) {
+    if (c == ',') c = ' ';
+  }
+  std::istringstream in(spaced);
+  std::vector<double> v;
+  std::string token;
+  while (in >> token) {
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(token, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != token.size() || !std::isfinite(value)) {
+      throw InputError("--initial-pose: '" + token + "' is not a finite number");
+    }
+    v.push_back(value);
+  }
+  if (v.size() != 7) {
+    throw InputError("--initial-pose: expected 7 numbers \"x y z qx qy qz qw\", got " + std::to_string(v.size()));
+  }
+  const Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
+  if (!(q.norm() > 1e-6)) throw InputError("--initial-pose: the quaternion is zero");
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = q.normalized().toRotationMatrix();
+  T.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+  return T;
+}
+
+std::string PoseText(const Eigen::Isometry3d& T) {
+  const Eigen::Quaterniond q(T.linear());
+  std::ostringstream out;
+  out.precision(6);
+  out << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z() << ' ' << q.x() << ' '
+      << q.y() << ' ' << q.z() << ' ' << q.w();
+  return out.str();
+}
+
+InitialPose ChooseInitialPose(const LocalizeCliOptions& options, const io::DatasetReader& reader) {
+  if (!options.initial_pose.empty()) return {ParsePose(options.initial_pose), "option"};
+  if (reader.has_groundtruth()) {
+    const auto truth = io::ReadTumTrajectory(std::filesystem::path(options.data_dir) / "groundtruth.tum");
+    if (!truth.empty()) return {truth.front().T_map_body, "groundtruth"};
+  }
+  return {Eigen::Isometry3d::Identity(), "identity", false};
+}
+
+// The map's file exists and has a supported extension; throws InputError naming it otherwise.
+void CheckMapFile(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError("map '" + file.string() + "': no such file");
+  const std::string ext = file.extension().string();
+  if (ext != ".bt" && ext != ".pcd") {
+    throw InputError("map '" + file.string() + "': unsupported format '" + ext + "' (expected .bt or .pcd)");
+  }
+}
+
+// The prior map, boxed around centre_map; throws InputError naming the file.
+std::unique_ptr<map::DistanceMap> LoadMap(const std::filesystem::path& file, const map::DistanceMapOptions& options,
+                                          const Eigen::Vector3f& centre_map, std::size_t* points) {
+  CheckMapFile(file);
+  if (file.extension() == ".bt") {
+    *points = 0;
+    return map::DistanceMap::LoadBt(file, options, centre_map);
+  }
+  std::vector<Eigen::Vector4f> xyzi;
+  io::LoadPcdXyzi(file, &xyzi);
+  std::vector<Eigen::Vector3f> points_map;
+  points_map.reserve(xyzi.size());
+  for (const Eigen::Vector4f& p : xyzi) {
+    if (p.head<3>().allFinite()) points_map.push_back(p.head<3>());
+  }
+  if (points_map.empty()) throw InputError("map '" + file.string() + "': no finite points");
+  *points = points_map.size();
+  return map::DistanceMap::FromPoints(points_map, options, centre_map);
+}
+
+int RunLocalize(const LocalizeCliOptions& options) {
+  try {
+    // Cheap checks of the arguments first, before the platform and the data are loaded.
+    CheckMapFile(options.map_file);
+    if (!options.initial_pose.empty()) ParsePose(options.initial_pose);
+    const Platform platform = LoadPlatform(options.platform_file);
+    pipeline::LocalizerOptions localizer_options =
+        pipeline::LocalizerOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+    localizer_options.gpf.threads = options.threads;
+    localizer_options.localize_only = true;
+    io::DatasetReader reader(options.data_dir);
+    if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
+      std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
+                << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
+    }
+    const InitialPose initial = ChooseInitialPose(options, reader);
+    std::cout << "initial pose (" << initial.source << "): " << PoseText(initial.T_map_body)
+              << (initial.given ? "" : ", roll and pitch from gravity (no --initial-pose, no ground truth)") << '\n';
+
+    std::size_t map_points = 0;
+    std::unique_ptr<map::DistanceMap> prior =
+        LoadMap(options.map_file, localizer_options.map, initial.T_map_body.translation().cast<float>(), &map_points);
+    prior->WaitForUpdates();  // the first distance field is ready before the first scan
+    std::cout << "map " << options.map_file;
+    if (map_points > 0) std::cout << ": " << map_points << " points";
+    std::cout << ", resolution " << prior->options().resolution_m << " m\n";
+
+    const std::filesystem::path out(options.out_dir);
+    std::filesystem::create_directories(out);
+    pipeline::Localizer localizer(localizer_options, platform.plugin.plugin, std::move(prior),
+                                  initial.given ? std::optional<Eigen::Isometry3d>(initial.T_map_body) : std::nullopt);
+    io::TumTrajectoryWriter trajectory(out / "trajectory.tum");
+    pipeline::RunOptions run_options;
+    run_options.max_duration_s = options.max_duration_s;
+    run_options.stop = &g_stop;
+    if (!options.quiet) run_options.on_progress = PrintRunProgress;
+    const auto previous = std::signal(SIGINT, OnLocalizeSigint);
+    const pipeline::RunSummary summary = pipeline::RunDataset(reader, localizer, trajectory, run_options);
+    std::signal(SIGINT, previous);
+    if (!options.quiet) std::fprintf(stderr, "\n");
+
+    RunOutputsInput outputs;
+    outputs.out_dir = out;
+    outputs.platform_file = options.platform_file;
+    outputs.payload = platform.plugin.plugin->Name();
+    outputs.data_dir = options.data_dir;
+    outputs.gpf_threads = static_cast<std::size_t>(options.threads);
+    outputs.summary = summary;
+    outputs.stats = localizer.stats();
+    outputs.has_groundtruth = reader.has_groundtruth();
+    outputs.world_frame_errors = true;
+    outputs.extra_key = "localize";
+    outputs.extra.Add("map", options.map_file);
+    outputs.extra.Add("map_points", map_points);
+    outputs.extra.Add("map_resolution_m", localizer.distance_map().options().resolution_m);
+    outputs.extra.Add("initial_pose_source", initial.source);
+    outputs.extra.Add("initial_pose", PoseText(initial.T_map_body));
+    return WriteRunOutputs(outputs);
+  } catch (const Error& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace
+
+void AddLocalizeCommand(CLI::App* app) {
+  auto options = std::make_shared<LocalizeCliOptions>();
+  CLI::App* cmd =
+      app->add_subcommand("localize", "Localise a dataset in a fixed prior map (.bt or .pcd) and evaluate it");
+  cmd->add_option("--map", options->map_file, "Prior map: OctoMap .bt or point cloud .pcd (map frame)")->required();
+  cmd->add_option("--platform", options->platform_file, "Platform YAML")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--data", options->data_dir, "Dataset folder (docs/dataset-format.md)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", options->out_dir, "Output folder")->required();
+  cmd->add_option("--initial-pose", options->initial_pose,
+                  "T_map_body at the end of the static start, \"x y z qx qy qz qw\" "
+                  "(default: the dataset's first ground-truth pose, else identity)");
+  cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)");
+  cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
+  cmd->add_flag("--quiet", options->quiet, "No progress line");
+  cmd->callback([options]() {
+    const int code = RunLocalize(*options);
+    if (code != 0) throw CLI::RuntimeError(code);
+  });
+}
+
+}  // namespace unimap::cli

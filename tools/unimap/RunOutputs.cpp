@@ -1,0 +1,144 @@
+#include "RunOutputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+
+#include "eval/AtomicFile.hpp"
+#include "eval/EvaluationReport.hpp"
+#include "eval/MetricRows.hpp"
+#include "eval/TrajectoryAssociation.hpp"
+#include "eval/TrajectoryErrors.hpp"
+#include "eval/TrajectoryEvaluation.hpp"
+#include "io/TumTrajectory.hpp"
+
+namespace unimap::cli {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// A number for run.json: null when undefined (no pose associated).
+double OrNull(double value, bool defined) { return defined ? value : std::numeric_limits<double>::quiet_NaN(); }
+
+}  // namespace
+
+WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimate,
+                                         const std::vector<StampedPose>& truth) {
+  const eval::TrajectoryAssociation association = eval::AssociateTrajectories(estimate, truth);
+  WorldFrameErrors e;
+  double sum_p2 = 0.0, sum_r2 = 0.0;
+  for (const eval::AssociatedPose& pair : association.pairs) {
+    const double dp = (pair.T_est_body.translation() - pair.T_true_body.translation()).norm();
+    // Rotation error log(q_est^-1 q_true) (DESIGN.md 1), its angle.
+    const Eigen::Quaterniond q_est(pair.T_est_body.linear());
+    const Eigen::Quaterniond q_true(pair.T_true_body.linear());
+    const double theta_deg = eval::RotationLog(q_est.conjugate() * q_true).norm() * kRadToDeg;
+    sum_p2 += dp * dp;
+    sum_r2 += theta_deg * theta_deg;
+    e.position_max_error_m = std::max(e.position_max_error_m, dp);
+    e.rotation_max_error_deg = std::max(e.rotation_max_error_deg, theta_deg);
+  }
+  e.poses = association.pairs.size();
+  if (e.poses > 0) {
+    e.position_rmse_m = std::sqrt(sum_p2 / static_cast<double>(e.poses));
+    e.rotation_rmse_deg = std::sqrt(sum_r2 / static_cast<double>(e.poses));
+  }
+  return e;
+}
+
+JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
+  JsonObject o;
+  o.Add("imu_samples", s.imu_samples);
+  o.Add("imu_out_of_order", s.imu_out_of_order);
+  o.Add("imu_gaps", s.imu_gaps);
+  o.Add("encoder_rejected", s.encoder_rejected);
+  o.Add("scans_matched", s.scans_matched);
+  o.Add("scans_unmatched", s.scans_unmatched);
+  o.Add("scans_bad_input", s.scans_bad_input);
+  o.Add("scans_no_encoder", s.scans_no_encoder);
+  o.Add("scans_out_of_order", s.scans_out_of_order);
+  o.Add("beams_dropped", s.beams_dropped);
+  o.Add("map_insertions", s.map_insertions);
+  o.Add("map_errors", s.map_errors);
+  o.Add("messages", s.messages);
+  return o;
+}
+
+void PrintRunProgress(const pipeline::RunProgress& p) {
+  const double rtf = p.wall_s > 0.0 ? p.data_time_s / p.wall_s : 0.0;
+  std::fprintf(stderr, "\r%zu scans | %.0f scans/s | %.1fx real time", p.scans,
+               p.wall_s > 0.0 ? static_cast<double>(p.scans) / p.wall_s : 0.0, rtf);
+  if (p.data_duration_s > 0.0 && rtf > 0.0) {
+    std::fprintf(stderr, " | %.0f%% | ETA %.0f s   ", 100.0 * p.data_time_s / p.data_duration_s,
+                 std::max(0.0, (p.data_duration_s - p.data_time_s) / rtf));
+  }
+  std::fflush(stderr);
+}
+
+int WriteRunOutputs(const RunOutputsInput& in) {
+  const pipeline::RunSummary& summary = in.summary;
+  const std::filesystem::path out = in.out_dir;
+  const std::filesystem::path truth_file = std::filesystem::path(in.data_dir) / "groundtruth.tum";
+  const bool evaluate = in.has_groundtruth && summary.poses_written >= 2;
+
+  JsonObject run;
+  run.Add("realtime_factor", summary.realtime_factor);
+  run.Add("processing_s", summary.processing_s);
+  run.Add("data_duration_s", summary.data_duration_s);
+  run.Add("scans", in.stats.scans);
+  run.Add("poses", summary.poses_written);
+  run.Add("peak_rss_mb", summary.peak_rss_mb);
+  run.Add("interrupted", summary.interrupted);
+  run.Add("error", summary.error);
+  run.Add("platform", in.platform_file);
+  run.Add("payload", in.payload);
+  run.Add("dataset", in.data_dir);
+  run.Add("gpf_threads", in.gpf_threads);
+  run.Add("localizer", LocalizerStatsJson(in.stats));
+  if (!in.extra_key.empty()) run.Add(in.extra_key, in.extra);
+  WorldFrameErrors world_errors;
+  if (in.world_frame_errors && evaluate) {
+    world_errors = ComputeWorldFrameErrors(io::ReadTumTrajectory(out / "trajectory.tum"),
+                                           io::ReadTumTrajectory(truth_file));
+  }
+  if (in.world_frame_errors) {
+    const bool defined = world_errors.poses > 0;
+    run.Add("position_rmse_m", OrNull(world_errors.position_rmse_m, defined));
+    run.Add("rotation_rmse_deg", OrNull(world_errors.rotation_rmse_deg, defined));
+    run.Add("position_max_error_m", OrNull(world_errors.position_max_error_m, defined));
+    run.Add("rotation_max_error_deg", OrNull(world_errors.rotation_max_error_deg, defined));
+    run.Add("error_poses", world_errors.poses);
+  }
+  eval::WriteFileAtomically(out / "run.json", run.ToString() + "\n");
+
+  std::cout << "scans " << in.stats.scans << " (matched " << in.stats.scans_matched << "), data "
+            << summary.data_duration_s << " s in " << summary.processing_s << " s: " << summary.realtime_factor
+            << "x real time, peak RSS " << summary.peak_rss_mb << " MiB\n";
+  for (const auto& message : in.stats.messages) std::cout << "  skipped: " << message << '\n';
+  if (in.world_frame_errors && world_errors.poses > 0) {
+    std::cout << "  position_rmse_m = " << world_errors.position_rmse_m
+              << "  (unaligned: estimate and truth share the map frame)\n"
+              << "  rotation_rmse_deg = " << world_errors.rotation_rmse_deg << '\n'
+              << "  position_max_error_m = " << world_errors.position_max_error_m << '\n'
+              << "  rotation_max_error_deg = " << world_errors.rotation_max_error_deg << '\n';
+  }
+  if (evaluate) {
+    const auto truth = io::ReadTumTrajectory(truth_file);
+    const auto estimate = io::ReadTumTrajectory(out / "trajectory.tum");
+    const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(estimate, truth, {});
+    eval::WriteEvaluationReport(evaluation, {(out / "trajectory.tum").string(), truth_file.string()}, out);
+    for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
+      std::cout << "  " << row.key << " = " << row.value << '\n';
+    }
+  }
+  std::cout << "wrote " << (out / "trajectory.tum").string() << ", " << (out / "run.json").string() << '\n';
+  if (!summary.error.empty()) {
+    std::cerr << "error: " << in.data_dir << ": " << summary.error << " (outputs hold what was processed)\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace unimap::cli

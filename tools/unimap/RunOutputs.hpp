@@ -1,0 +1,60 @@
+#pragma once
+// The outputs shared by `unimap run` and `unimap localize`: run.json, the
+// console summary and, with ground truth, the evaluation.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "JsonObject.hpp"
+#include "pipeline/DatasetRunner.hpp"
+#include "pipeline/Localizer.hpp"
+
+namespace unimap::cli {
+
+// Everything a finished run reports.
+struct RunOutputsInput {
+  std::filesystem::path out_dir;       // holds trajectory.tum (written by the run); gets run.json etc.
+  std::string platform_file;           // run.json "platform"
+  std::string payload;                 // run.json "payload" (plugin name)
+  std::string data_dir;                // run.json "dataset"; its groundtruth.tum is the truth
+  std::size_t gpf_threads = 1;         // run.json "gpf_threads"
+  pipeline::RunSummary summary;        // what the run did and how fast
+  pipeline::LocalizerStats stats;      // the localiser's counts (run.json "localizer")
+  bool has_groundtruth = false;        // the dataset has groundtruth.tum
+  // Estimate and truth share one frame (localisation in a prior map whose
+  // frame is the truth's): run.json also gets the unaligned errors
+  // position_rmse_m, rotation_rmse_deg, position_max_error_m,
+  // rotation_max_error_deg and error_poses (null when nothing associates).
+  bool world_frame_errors = false;
+  std::string extra_key;               // when not empty, run.json gets extra under this key
+  JsonObject extra;                    // command-specific details (e.g. the prior map)
+};
+
+// Unaligned errors of an estimate against the truth in the same frame.
+struct WorldFrameErrors {
+  double position_rmse_m = 0.0;         // sqrt(mean |p_est - p_true|^2)
+  double rotation_rmse_deg = 0.0;       // sqrt(mean theta^2), theta = |log(q_est^-1 q_true)|
+  double position_max_error_m = 0.0;    // max |p_est - p_true|
+  double rotation_max_error_deg = 0.0;  // max theta
+  std::size_t poses = 0;                // estimate poses associated with the truth (0: the rest is undefined)
+};
+
+// Associates estimate and truth by time (eval::AssociateTrajectories,
+// default tolerance) and computes the errors without any alignment.
+WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimate,
+                                         const std::vector<StampedPose>& truth);
+
+// The localiser's counts as run.json's "localizer" object.
+JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& stats);
+
+// The progress line on stderr: scans, scans/s, real-time factor, ETA.
+void PrintRunProgress(const pipeline::RunProgress& progress);
+
+// Writes out_dir/run.json, prints the summary and skip messages, and with
+// ground truth (and at least two poses) evaluates trajectory.tum against it
+// (metrics.json, figures, report.html) and prints the metrics. Returns the
+// exit code: 2 when the run ended on a reader error (printed), else 0.
+// Throws unimap::Error when a file cannot be read or written.
+int WriteRunOutputs(const RunOutputsInput& input);
+
+}  // namespace unimap::cli
