@@ -18,6 +18,24 @@ void RequireClamp(float clamp_m) {
   }
 }
 
+// True when some edge of the 2 x 2 x 2 stencil c (c[4 dx + 2 dy + dz])
+// joins values more than max_jump_m apart. Distances of neighbouring cells
+// differ by at most the edge length, and across a surface between them
+// (opposite signs) |a - b| = |a| + |b| is at most that too (each end is at
+// most its |value| from the surface); a larger jump is where the two sides
+// of a surface's edge meet, or the reach of the transform ends, not a
+// surface.
+bool JumpAlongAnEdge(const float (&c)[8], float max_jump_m) {
+  int jump = 0;  // branch-free
+  for (int k = 0; k < 4; ++k) {
+    jump |= static_cast<int>(std::abs(c[k] - c[k + 4]) > max_jump_m);                  // along x
+    const int y0 = (k & 1) | ((k & 2) << 1);                                          // 0 1 4 5
+    jump |= static_cast<int>(std::abs(c[y0] - c[y0 + 2]) > max_jump_m);               // along y
+    jump |= static_cast<int>(std::abs(c[2 * k] - c[2 * k + 1]) > max_jump_m);         // along z
+  }
+  return jump != 0;
+}
+
 }  // namespace
 
 DistanceField::DistanceField(float clamp_m, std::uint64_t sequence)
@@ -28,13 +46,25 @@ DistanceField::DistanceField(float clamp_m, std::uint64_t sequence)
 DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims,
                              float resolution_m, float clamp_m, std::vector<std::uint16_t> cells,
                              std::uint64_t sequence)
+    : DistanceField(origin_m, dims, resolution_m, clamp_m, std::move(cells), sequence,
+                    Encoding::kUnsigned) {}
+
+DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims,
+                             float resolution_m, float clamp_m, std::vector<std::uint16_t> cells,
+                             std::uint64_t sequence, Encoding encoding)
     : origin_m_(origin_m),
       dims_(dims),
       dims_f_(dims.cast<float>()),
       resolution_m_(resolution_m),
       inv_resolution_(1.0f / resolution_m),
       clamp_m_(clamp_m),
-      step_m_(clamp_m / static_cast<float>(kMaxSteps)),
+      step_m_(encoding == Encoding::kSigned
+                  ? 2.0f * clamp_m / static_cast<float>(kMaxSignedSteps)
+                  : clamp_m / static_cast<float>(kMaxSteps)),
+      offset_m_(encoding == Encoding::kSigned ? clamp_m : 0.0f),
+      shift_(encoding == Encoding::kSigned ? 1 : 0),
+      flag_mask_(encoding == Encoding::kSigned ? 1 : 0),
+      max_crossing_m_(kMaxCrossingSum * resolution_m),
       stride_x_(static_cast<std::size_t>(dims.y()) * static_cast<std::size_t>(dims.z())),
       stride_y_(static_cast<std::size_t>(dims.z())),
       cells_(std::move(cells)),
@@ -50,6 +80,53 @@ DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vecto
                      std::to_string(dims.y()) + "x" + std::to_string(dims.z()) + " needs " +
                      std::to_string(expected) + " cells, got " + std::to_string(cells_.size()));
   }
+  if (encoding == Encoding::kSigned) FlagJumpingStencils();
+}
+
+void DistanceField::FlagJumpingStencils() {
+  // Largest step difference along an edge that a surface can explain.
+  const int max_steps = static_cast<int>(max_crossing_m_ / step_m_);
+  const auto nx = static_cast<std::size_t>(dims_.x());
+  const auto ny = static_cast<std::size_t>(dims_.y());
+  const auto nz = static_cast<std::size_t>(dims_.z());
+  // Per cell, the edges towards +z (bit 0), +y (bit 1) and +x (bit 2) that jump.
+  std::vector<std::uint8_t> jumps(cells_.size(), 0);
+  const auto jump = [&](std::size_t a, std::size_t b) {
+    const int difference = static_cast<int>(cells_[a] >> 1) - static_cast<int>(cells_[b] >> 1);
+    return static_cast<std::uint8_t>(std::abs(difference) > max_steps);
+  };
+  for (std::size_t x = 0; x < nx; ++x) {
+    for (std::size_t y = 0; y < ny; ++y) {
+      const std::size_t row = x * stride_x_ + y * stride_y_;
+      for (std::size_t z = 0; z + 1 < nz; ++z) jumps[row + z] |= jump(row + z, row + z + 1);
+      if (y + 1 < ny) {
+        for (std::size_t z = 0; z < nz; ++z) {
+          jumps[row + z] |= static_cast<std::uint8_t>(jump(row + z, row + z + stride_y_) << 1);
+        }
+      }
+      if (x + 1 < nx) {
+        for (std::size_t z = 0; z < nz; ++z) {
+          jumps[row + z] |= static_cast<std::uint8_t>(jump(row + z, row + z + stride_x_) << 2);
+        }
+      }
+    }
+  }
+  // A stencil's 12 edges: 4 along each axis, from the cells of its face
+  // across that axis.
+  const std::size_t sx = stride_x_;
+  const std::size_t sy = stride_y_;
+  for (std::size_t x = 0; x + 1 < nx; ++x) {
+    for (std::size_t y = 0; y + 1 < ny; ++y) {
+      const std::size_t row = x * sx + y * sy;
+      for (std::size_t z = 0; z + 1 < nz; ++z) {
+        const std::size_t i = row + z;
+        const int along_z = (jumps[i] | jumps[i + sy] | jumps[i + sx] | jumps[i + sx + sy]) & 1;
+        const int along_y = (jumps[i] | jumps[i + 1] | jumps[i + sx] | jumps[i + sx + 1]) & 2;
+        const int along_x = (jumps[i] | jumps[i + 1] | jumps[i + sy] | jumps[i + sy + 1]) & 4;
+        cells_[i] = static_cast<std::uint16_t>(cells_[i] | ((along_z | along_y | along_x) != 0));
+      }
+    }
+  }
 }
 
 std::uint16_t DistanceField::Quantise(float distance_m, float clamp_m) {
@@ -60,11 +137,15 @@ std::uint16_t DistanceField::Quantise(float distance_m, float clamp_m) {
 }
 
 float DistanceField::CellDistance(const Eigen::Vector3i& cell) const {
+  return std::abs(CellValue(cell));
+}
+
+float DistanceField::CellValue(const Eigen::Vector3i& cell) const {
   if ((cell.array() < 0).any() || (cell.array() >= dims_.array()).any()) return clamp_m_;
   const std::size_t index = static_cast<std::size_t>(cell.x()) * stride_x_ +
                             static_cast<std::size_t>(cell.y()) * stride_y_ +
                             static_cast<std::size_t>(cell.z());
-  return static_cast<float>(cells_[index]) * step_m_;
+  return static_cast<float>(cells_[index] >> shift_) * step_m_ - offset_m_;
 }
 
 Eigen::Vector3f DistanceField::CellCentre(const Eigen::Vector3i& cell) const {
@@ -89,7 +170,9 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map,
   const Eigen::Vector3f base = u.array().floor();
   const Eigen::Vector3i i0 = base.cast<int>();
   const Eigen::Vector3f t = u - base;
-  float c[2][2][2];
+  // Corner values, c[4 dx + 2 dy + dz] at i0 + (dx, dy, dz).
+  float c[8];
+  bool jump = false;  // signed stencil whose sign changes cannot all be surfaces
   if ((i0.array() >= 0).all() && (i0.array() + 1 < dims_.array()).all()) {
     // All eight centres inside: direct loads.
     const std::uint16_t* base_cell = cells_.data() + static_cast<std::size_t>(i0.x()) * stride_x_ +
@@ -99,38 +182,46 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map,
       for (int dy = 0; dy < 2; ++dy) {
         const std::uint16_t* row = base_cell + static_cast<std::size_t>(dx) * stride_x_ +
                                    static_cast<std::size_t>(dy) * stride_y_;
-        c[dx][dy][0] = static_cast<float>(row[0]) * step_m_;
-        c[dx][dy][1] = static_cast<float>(row[1]) * step_m_;
+        c[4 * dx + 2 * dy] = static_cast<float>(row[0] >> shift_) * step_m_ - offset_m_;
+        c[4 * dx + 2 * dy + 1] = static_cast<float>(row[1] >> shift_) * step_m_ - offset_m_;
       }
     }
+    jump = (base_cell[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
   } else {
-    for (int dx = 0; dx < 2; ++dx) {
-      for (int dy = 0; dy < 2; ++dy) {
-        for (int dz = 0; dz < 2; ++dz) c[dx][dy][dz] = CellDistance(i0 + Eigen::Vector3i(dx, dy, dz));
-      }
-    }
+    for (int k = 0; k < 8; ++k) c[k] = CellValue(i0 + Eigen::Vector3i(k >> 2, (k >> 1) & 1, k & 1));
+    jump = offset_m_ > 0.0f && JumpAlongAnEdge(c, max_crossing_m_);
+  }
+  // Signed fields interpolate the signed values only where their sign
+  // changes can be surfaces (kMaxCrossingSum); otherwise the magnitudes
+  // (the same for stencils of one sign).
+  if (jump) {
+    for (float& value : c) value = std::abs(value);
   }
   // Interpolate along z, then y, then x; derivatives by the product rule.
   float cz[2][2];
   float dcz[2][2];
   for (int dx = 0; dx < 2; ++dx) {
     for (int dy = 0; dy < 2; ++dy) {
-      cz[dx][dy] = c[dx][dy][0] + t.z() * (c[dx][dy][1] - c[dx][dy][0]);
-      dcz[dx][dy] = c[dx][dy][1] - c[dx][dy][0];
+      const float c0 = c[4 * dx + 2 * dy];
+      const float c1 = c[4 * dx + 2 * dy + 1];
+      cz[dx][dy] = c0 + t.z() * (c1 - c0);
+      dcz[dx][dy] = c1 - c0;
     }
   }
   const float cy0 = cz[0][0] + t.y() * (cz[0][1] - cz[0][0]);
   const float cy1 = cz[1][0] + t.y() * (cz[1][1] - cz[1][0]);
   const float value = cy0 + t.x() * (cy1 - cy0);
+  // |s|: a negative interpolated value (behind a surface) flips with its gradient.
+  const float sign = std::copysign(1.0f, value);
   if (gradient_map != nullptr) {
     const float dy0 = cz[0][1] - cz[0][0];
     const float dy1 = cz[1][1] - cz[1][0];
     const float dz0 = dcz[0][0] + t.y() * (dcz[0][1] - dcz[0][0]);
     const float dz1 = dcz[1][0] + t.y() * (dcz[1][1] - dcz[1][0]);
     *gradient_map = Eigen::Vector3f(cy1 - cy0, dy0 + t.x() * (dy1 - dy0), dz0 + t.x() * (dz1 - dz0)) *
-                    inv_resolution_;
+                    (sign * inv_resolution_);
   }
-  return value;
+  return std::abs(value);
 }
 
 }  // namespace unimap::map

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -9,14 +11,36 @@ namespace unimap::map {
 
 // Immutable snapshot of the distance map for lookups: a dense grid over an
 // axis-aligned box, aligned with the octree voxels, holding for every voxel
-// the distance from its centre to the nearest occupied voxel centre, clamped
-// at clamp(). Distances are stored as 16-bit steps of clamp() / 65535.
-// Anything outside the box (and NaN) reads clamp(). Safe to share between
-// threads: nothing changes after construction.
+// the distance from its centre to the nearest surface (the nearest occupied
+// voxel centre, or that voxel's sub-voxel surface, see SurfacePoints),
+// clamped at clamp(). Distances are stored in 16 bits: kUnsigned as steps of
+// clamp() / 65535; kSigned as a distance in [-clamp(), clamp()] in 15 bits
+// (steps of 2 clamp() / 32767), negative behind a surface, bit 0 flagging
+// the cell's trilinear stencil (see kMaxCrossingSum). Lookups always return
+// magnitudes (>= 0): signs only let the trilinear interpolation cross zero
+// on a surface between two cell centres. Anything outside the box (and NaN)
+// reads clamp(). Safe to share between threads: nothing changes after
+// construction.
 class DistanceField {
  public:
   // Largest quantised value; stands for clamp().
   static constexpr std::uint16_t kMaxSteps = 65535;
+  // Largest 15-bit kSigned value; stands for +clamp() (0 for -clamp()).
+  static constexpr std::uint16_t kMaxSignedSteps = 32767;
+  // How cells encode distances.
+  enum class Encoding {
+    kUnsigned,  // code = Quantise(distance): distance = code * clamp / 65535
+    kSigned,    // code = QuantiseSigned(s): s = (code >> 1) * 2 clamp / 32767 - clamp;
+                // the constructor sets bit 0 (the stencil flag)
+  };
+  // Signed fields: the trilinear interpolation may cross zero along a cell
+  // edge whose end values have opposite signs only when their magnitudes sum
+  // to at most this many cell edges (a surface between them); otherwise the
+  // sign change is where the two sides of a surface's edge meet, not a
+  // surface. A stencil with such an edge (or any edge whose values differ by
+  // more) interpolates magnitudes; the constructor flags the stencils (by
+  // their lowest cell) once, so lookups test one bit.
+  static constexpr float kMaxCrossingSum = 1.25f;
 
   // An empty field: every lookup returns clamp_m.
   explicit DistanceField(float clamp_m, std::uint64_t sequence = 0);
@@ -25,9 +49,23 @@ class DistanceField {
   // Throws unimap::InputError when the sizes disagree or a value is invalid.
   DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
                 float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence);
+  // The same with cells in the given encoding.
+  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
+                float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence,
+                Encoding encoding);
 
   // The 16-bit code of a distance (values >= clamp_m map to kMaxSteps).
   static std::uint16_t Quantise(float distance_m, float clamp_m);
+  // The kSigned code of a signed distance: 15 bits shifted left, bit 0
+  // clear (saturates at +-clamp_m; NaN maps to +clamp_m).
+  static std::uint16_t QuantiseSigned(float signed_distance_m, float clamp_m) {
+    if (std::isnan(signed_distance_m)) return static_cast<std::uint16_t>(kMaxSignedSteps << 1);
+    const float unit = std::clamp(signed_distance_m / clamp_m, -1.0f, 1.0f);  // [-1, 1]
+    // Round half up (the value is >= 0): cheaper than std::round in export loops.
+    const auto steps = static_cast<std::uint16_t>(
+        (unit + 1.0f) * (0.5f * static_cast<float>(kMaxSignedSteps)) + 0.5f);
+    return static_cast<std::uint16_t>(steps << 1);
+  }
 
   // Distance (m) of the voxel containing p_map; clamp() outside the box.
   // One floor per axis, one index, one load.
@@ -42,15 +80,20 @@ class DistanceField {
     const std::size_t index = static_cast<std::size_t>(static_cast<int>(fx)) * stride_x_ +
                               static_cast<std::size_t>(static_cast<int>(fy)) * stride_y_ +
                               static_cast<std::size_t>(static_cast<int>(fz));
-    return static_cast<float>(cells_[index]) * step_m_;
+    return std::abs(static_cast<float>(cells_[index] >> shift_) * step_m_ - offset_m_);
   }
 
   // Trilinear interpolation between voxel centres (cells outside the box
   // count as clamp()); *gradient_map (if not null) receives its gradient.
+  // Signed fields interpolate the signed values and return the magnitude
+  // (see kMaxCrossingSum), so a surface between two centres reads zero.
   float DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const;
 
   // Distance (m) stored for a cell; clamp() when the cell is outside the grid.
   float CellDistance(const Eigen::Vector3i& cell) const;
+  // Signed value (m) stored for a cell (negative behind a surface in kSigned
+  // fields; equals CellDistance in kUnsigned ones); clamp() outside the grid.
+  float CellValue(const Eigen::Vector3i& cell) const;
   // Centre of a cell in the map frame.
   Eigen::Vector3f CellCentre(const Eigen::Vector3i& cell) const;
   // True when p_map lies inside the box.
@@ -61,6 +104,7 @@ class DistanceField {
   const Eigen::Vector3i& dims() const { return dims_; }        // cells per axis
   float resolution() const { return resolution_m_; }           // cell edge (m)
   float clamp() const { return clamp_m_; }                     // clamp distance (m)
+  Encoding encoding() const { return offset_m_ > 0.0f ? Encoding::kSigned : Encoding::kUnsigned; }
   std::uint64_t sequence() const { return sequence_; }         // updates integrated
   std::size_t CellCount() const { return cells_.size(); }
   std::size_t MemoryBytes() const { return cells_.size() * sizeof(std::uint16_t); }
@@ -72,11 +116,20 @@ class DistanceField {
   float resolution_m_ = 1.0f;
   float inv_resolution_ = 1.0f;
   float clamp_m_ = 0.0f;
-  float step_m_ = 0.0f;  // metres per quantisation step
+  float step_m_ = 0.0f;    // metres per quantisation step
+  float offset_m_ = 0.0f;  // value = (code >> shift_) * step_m_ - offset_m_
+  int shift_ = 0;          // 1 when signed (bit 0 is the stencil flag)
+  std::uint16_t flag_mask_ = 0;   // 1 when signed: the stencil flag
+  float max_crossing_m_ = 0.0f;   // kMaxCrossingSum * resolution_m_
   std::size_t stride_x_ = 0;
   std::size_t stride_y_ = 0;
   std::vector<std::uint16_t> cells_;
   std::uint64_t sequence_ = 0;
+
+  // Sets the stencil flag of every cell whose stencil (itself up to +1 on
+  // every axis, all inside) has an edge whose values differ by more than
+  // max_crossing_m_ (kSigned only).
+  void FlagJumpingStencils();
 };
 
 }  // namespace unimap::map

@@ -263,11 +263,12 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   if (rebuilt) ++counts.rebuilds;
   const Clock::time_point updated = Clock::now();
   const EdtRegion* region = region_.get();
-  lock.unlock();  // only this thread touches region_ from here on
+  const SurfacePoints* surfaces = tree_->surfaces();
+  lock.unlock();  // only this thread touches region_ and the surfaces from here on
 
   std::shared_ptr<const DistanceField> field =
       region != nullptr
-          ? region->Export(sequence_)
+          ? region->Export(sequence_, surfaces)
           : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m),
                                                   sequence_);
   const Clock::time_point exported = Clock::now();
@@ -279,6 +280,8 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   stats_.rebuilds += counts.rebuilds;
   stats_.edt_cells = region != nullptr ? region->CellCount() : 0;
   stats_.field_bytes = field->MemoryBytes();
+  stats_.surface_voxels = surfaces != nullptr ? surfaces->size() : 0;
+  stats_.surface_bytes = surfaces != nullptr ? surfaces->MemoryBytes() : 0;
   stats_.last_insert_s = Seconds(start, inserted);
   stats_.last_edt_s = Seconds(inserted, updated);
   stats_.last_export_s = Seconds(updated, exported);

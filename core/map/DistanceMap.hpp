@@ -35,7 +35,10 @@ class OccupancyTree;
 // transform is rebuilt around it (the previous snapshot stays valid until the
 // new one is published). The box is clipped to the occupied voxels near the
 // sensor (see FieldBoxPlanner). Requests queued while an update runs are
-// integrated together, with one distance update for the batch. All methods
+// integrated together, with one distance update for the batch. With
+// options.subvoxel_surfaces, distances are to the surface the returns put
+// inside each occupied voxel (SurfacePoints), signed behind it, instead of
+// to the voxel centres; the published field reads magnitudes. All methods
 // are thread-safe.
 class DistanceMap {
  public:

@@ -16,6 +16,8 @@ struct DistanceMapStats {
   std::uint64_t pending_jobs = 0;         // queued requests not yet integrated
   std::size_t edt_cells = 0;              // cells of the current EDT box
   std::size_t field_bytes = 0;            // memory of the published field's grid
+  std::size_t surface_voxels = 0;         // occupied voxels with a sub-voxel surface
+  std::size_t surface_bytes = 0;          // approximate memory of those surfaces
   double last_insert_s = 0.0;             // octree insertion time of the last update (wall)
   double last_edt_s = 0.0;                // EDT update or rebuild time of the last update
   double last_export_s = 0.0;             // time to copy the EDT into the published field

@@ -1,5 +1,7 @@
 #include "map/EdtRegion.hpp"
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include <dynamicEDT3D/dynamicEDTOctomap.h>
@@ -36,26 +38,95 @@ EdtRegion::~EdtRegion() = default;
 
 void EdtRegion::Update() { edt_->update(/*updateRealDist=*/true); }
 
-std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence) const {
+std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
+                                                      const SurfacePoints* surfaces) const {
   const Eigen::Vector3i dims = box_.Dims();
   std::vector<std::uint16_t> cells(box_.CellCount());
-  std::size_t index = 0;
-  for (int x = box_.min().x(); x <= box_.max().x(); ++x) {
-    for (int y = box_.min().y(); y <= box_.max().y(); ++y) {
-      for (int z = box_.min().z(); z <= box_.max().z(); ++z) {
-        const float distance_m = edt_->getDistance_unsafe(ToOctreeKey(Eigen::Vector3i(x, y, z)));
-        cells[index++] = DistanceField::Quantise(distance_m, clamp_m_);
-      }
-    }
-  }
   const double half_voxel_m = 0.5 * tree_->getResolution();
   const octomap::point3d min_centre = tree_->keyToCoord(ToOctreeKey(box_.min()));
   const Eigen::Vector3f origin_m(static_cast<float>(min_centre.x() - half_voxel_m),
                                  static_cast<float>(min_centre.y() - half_voxel_m),
                                  static_cast<float>(min_centre.z() - half_voxel_m));
-  return std::make_shared<const DistanceField>(origin_m, dims,
-                                               static_cast<float>(tree_->getResolution()),
-                                               clamp_m_, std::move(cells), sequence);
+  const auto make_field = [&](DistanceField::Encoding encoding) {
+    return std::make_shared<const DistanceField>(origin_m, dims,
+                                                 static_cast<float>(tree_->getResolution()),
+                                                 clamp_m_, std::move(cells), sequence, encoding);
+  };
+  std::size_t index = 0;
+  if (surfaces == nullptr) {
+    for (int x = box_.min().x(); x <= box_.max().x(); ++x) {
+      for (int y = box_.min().y(); y <= box_.max().y(); ++y) {
+        for (int z = box_.min().z(); z <= box_.max().z(); ++z) {
+          const float distance_m = edt_->getDistance_unsafe(ToOctreeKey(Eigen::Vector3i(x, y, z)));
+          cells[index++] = DistanceField::Quantise(distance_m, clamp_m_);
+        }
+      }
+    }
+    return make_field(DistanceField::Encoding::kUnsigned);
+  }
+  FillSigned(*surfaces, &cells);
+  return make_field(DistanceField::Encoding::kSigned);
+}
+
+void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells) const {
+  // Neighbouring cells mostly share their nearest obstacle. Remember the
+  // obstacle (and its element) of each cell of the current x plane, so the
+  // cells just visited along z, y and x are checked first, then a small
+  // cache of recent obstacles, before the surface table: the plane and the
+  // cache stay in the CPU cache, the table (all voxels ever hit) does not.
+  struct Seen {
+    std::uint64_t key = ~std::uint64_t{0};
+    const SurfacePoints::Element* element = nullptr;
+  };
+  constexpr int kRecentBits = 12;
+  std::vector<Seen> recent(std::size_t{1} << kRecentBits);
+  const Eigen::Vector3i dims = box_.Dims();
+  std::vector<Seen> plane(static_cast<std::size_t>(dims.y()) * static_cast<std::size_t>(dims.z()));
+  const auto element_of = [&](std::uint64_t key, std::size_t in_plane, bool has_z, bool has_y) {
+    if (has_z && plane[in_plane - 1].key == key) return plane[in_plane - 1].element;
+    const std::size_t below_y = in_plane - static_cast<std::size_t>(dims.z());
+    if (has_y && plane[below_y].key == key) return plane[below_y].element;
+    if (plane[in_plane].key == key) return plane[in_plane].element;  // x - 1
+    Seen& slot = recent[(key * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)];
+    if (slot.key != key) slot = Seen{key, surfaces.Find(key)};
+    return slot.element;
+  };
+  // The transform's closest obstacles, in its cell coordinates (key - box
+  // min). DynamicEDTOctomap inherits DynamicEDT3D privately and only offers
+  // them through float coordinates (four conversions per cell); an explicit
+  // cast to an inaccessible base is well-defined ([expr.cast]/4).
+  const DynamicEDT3D& cells_edt = (const DynamicEDT3D&)(*edt_);
+  const float resolution_m = static_cast<float>(tree_->getResolution());
+  const Eigen::Vector3f min_centre = Eigen::Vector3f(
+      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().x()))),
+      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().y()))),
+      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().z()))));
+  // Cells at the transform's maximum distance have no obstacle in reach.
+  const float reach_m = edt_->getMaxDist();
+  std::size_t index = 0;
+  for (int x = 0; x < dims.x(); ++x) {
+    std::size_t in_plane = 0;  // (y, z) of the current cell; plane[] holds x - 1 from here on
+    for (int y = 0; y < dims.y(); ++y) {
+      for (int z = 0; z < dims.z(); ++z, ++in_plane) {
+        const Eigen::Vector3i cell(x, y, z);
+        float distance_m = edt_->getDistance_unsafe(ToOctreeKey(box_.min() + cell));
+        Seen seen;
+        if (distance_m < reach_m) {
+          const INTPOINT3D obstacle = cells_edt.getClosestObstacle(x, y, z);
+          if (obstacle.x != DynamicEDT3D::invalidObstData) {
+            seen.key = SurfacePoints::Pack(box_.min() + Eigen::Vector3i(obstacle.x, obstacle.y, obstacle.z));
+            seen.element = element_of(seen.key, in_plane, z > 0, y > 0);
+            if (seen.element != nullptr) {
+              const Eigen::Vector3f centre = min_centre + cell.cast<float>() * resolution_m;
+              distance_m = surfaces.SignedDistance(*seen.element, centre);
+            }
+          }
+        }
+        plane[in_plane] = seen;
+        (*cells)[index++] = DistanceField::QuantiseSigned(distance_m, clamp_m_);
+      }
+    }
+  }
 }
 
 }  // namespace unimap::map

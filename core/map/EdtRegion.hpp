@@ -2,9 +2,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "map/DistanceField.hpp"
 #include "map/KeyBox.hpp"
+#include "map/SurfacePoints.hpp"
 
 namespace octomap {
 class OcTree;
@@ -31,13 +33,22 @@ class EdtRegion {
   // Applies the voxels whose occupancy changed since the last call (changes
   // outside the box are ignored) and repairs the distances around them.
   void Update();
-  // Copies the box into a new immutable field tagged with sequence.
-  std::shared_ptr<const DistanceField> Export(std::uint64_t sequence) const;
+  // Copies the box into a new immutable field tagged with sequence. Without
+  // surfaces, each cell holds the distance from its centre to the nearest
+  // occupied voxel centre (kUnsigned). With them (kSigned), cells whose
+  // nearest occupied voxel (by centre, as the transform finds it) has a
+  // surface element hold the signed distance to that element instead
+  // (SurfacePoints::SignedDistance); the others keep the centre distance.
+  std::shared_ptr<const DistanceField> Export(std::uint64_t sequence,
+                                              const SurfacePoints* surfaces = nullptr) const;
 
   const KeyBox& box() const { return box_; }
   std::size_t CellCount() const { return box_.CellCount(); }
 
  private:
+  // Export's cells with surfaces (kSigned codes, in the box's x-y-z order).
+  void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells) const;
+
   octomap::OcTree* tree_;
   KeyBox box_;
   float clamp_m_;

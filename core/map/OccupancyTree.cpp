@@ -1,5 +1,6 @@
 #include "map/OccupancyTree.hpp"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -22,10 +23,7 @@ octomap::OcTreeKey ToOctreeKey(const Eigen::Vector3i& key) {
 }
 
 // 16-bit keys packed into one integer for the hash sets.
-std::uint64_t Pack(const Eigen::Vector3i& key) {
-  return (static_cast<std::uint64_t>(key.x()) << 32) | (static_cast<std::uint64_t>(key.y()) << 16) |
-         static_cast<std::uint64_t>(key.z());
-}
+std::uint64_t Pack(const Eigen::Vector3i& key) { return SurfacePoints::Pack(key); }
 
 Eigen::Vector3i Unpack(std::uint64_t packed) {
   return Eigen::Vector3i(static_cast<int>((packed >> 32) & 0xffff),
@@ -58,6 +56,7 @@ OccupancyTree::OccupancyTree(const DistanceMapOptions& options)
       tree_(std::make_unique<octomap::OcTree>(options.resolution_m)),
       resolution_m_(options.resolution_m),
       tracks_occupied_(options.raycast_free_space && options.clear_occupied_only) {
+  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_);
   ApplySensorModel();
 }
 
@@ -69,6 +68,7 @@ OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree,
       tracks_occupied_(options.raycast_free_space && options.clear_occupied_only) {
   if (tree_ == nullptr) throw InputError("OccupancyTree: null octree");
   resolution_m_ = tree_->getResolution();
+  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_);
   ApplySensorModel();
   if (!tracks_occupied_) return;
   ForEachOccupiedLeaf(*tree_, nullptr, [this](const Eigen::Vector3i& min_key, int size) {
@@ -111,6 +111,7 @@ KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map,
     const Eigen::Vector3i key = KeyOf(p);
     endpoints.Extend(key);
     const bool first_in_voxel = hits.insert(Pack(key)).second;
+    if (surfaces_ != nullptr) surfaces_->Add(Pack(key), KeyCentre(key), p, &origin_map);
     if (!options_.discretize_rays) {
       ends.push_back(p);
     } else if (first_in_voxel) {
@@ -118,7 +119,15 @@ KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map,
     }
   }
   if (options_.raycast_free_space) ClearOccupiedAlongRays(origin_map, ends, hits);
-  for (const std::uint64_t key : hits) UpdateVoxel(Unpack(key), true);
+  if (surfaces_ == nullptr) {
+    for (const std::uint64_t key : hits) UpdateVoxel(Unpack(key), true);
+    return endpoints;
+  }
+  // In key order: refreshing a surface reads its neighbours' (SurfacePoints),
+  // which the previous voxels have just brought into the cache.
+  std::vector<std::uint64_t> hit_keys(hits.begin(), hits.end());
+  std::sort(hit_keys.begin(), hit_keys.end());
+  for (const std::uint64_t key : hit_keys) UpdateVoxel(Unpack(key), true);
   return endpoints;
 }
 
@@ -142,6 +151,7 @@ void OccupancyTree::ClearOccupiedAlongRays(const Eigen::Vector3f& origin_map,
 KeyBox OccupancyTree::InsertWithOctomap(const std::vector<Eigen::Vector3f>& points_map,
                                         const Eigen::Vector3f& origin_map) {
   KeyBox endpoints;
+  KeySetType hits;  // voxels of the returns (only to sync their surfaces)
   octomap::Pointcloud cloud;
   cloud.reserve(points_map.size());
   const float max_range_m = static_cast<float>(options_.max_insert_range_m);
@@ -157,18 +167,52 @@ KeyBox OccupancyTree::InsertWithOctomap(const std::vector<Eigen::Vector3f>& poin
       continue;
     }
     cloud.push_back(p.x(), p.y(), p.z());
-    endpoints.Extend(KeyOf(p));
+    const Eigen::Vector3i key = KeyOf(p);
+    endpoints.Extend(key);
+    if (surfaces_ != nullptr) {
+      surfaces_->Add(Pack(key), KeyCentre(key), p, &origin_map);
+      hits.insert(Pack(key));
+    }
   }
   const octomap::point3d origin(origin_map.x(), origin_map.y(), origin_map.z());
   tree_->insertPointCloud(cloud, origin, options_.max_insert_range_m, /*lazy_eval=*/false,
                           options_.discretize_rays);
+  if (surfaces_ == nullptr) return endpoints;
+  for (const std::uint64_t key : hits) SyncSurface(Unpack(key));
+  // Voxels the rays freed: only the tree's change detection (enabled while a
+  // distance transform consumes it) names them; without it their stale
+  // surfaces stay until the voxel is hit again (they are only read for
+  // occupied voxels).
+  if (tree_->isChangeDetectionEnabled()) {
+    for (auto it = tree_->changedKeysBegin(), end = tree_->changedKeysEnd(); it != end; ++it) {
+      const Eigen::Vector3i key = FromOctreeKey(it->first);
+      if (surfaces_->Find(Pack(key)) != nullptr) SyncSurface(key);
+    }
+  }
   return endpoints;
+}
+
+void OccupancyTree::SyncSurface(const Eigen::Vector3i& key) {
+  const octomap::OcTreeNode* node = tree_->search(ToOctreeKey(key));
+  if (node != nullptr && tree_->isNodeOccupied(node)) {
+    surfaces_->Refresh(Pack(key), KeyCentre(key));
+  } else {
+    surfaces_->Erase(Pack(key));
+  }
 }
 
 void OccupancyTree::UpdateVoxel(const Eigen::Vector3i& key, bool hit) {
   const octomap::OcTreeNode* node = tree_->updateNode(ToOctreeKey(key), hit);
+  const bool occupied = tree_->isNodeOccupied(node);
+  if (surfaces_ != nullptr) {
+    if (!occupied) {
+      surfaces_->Erase(Pack(key));
+    } else if (hit) {
+      surfaces_->Refresh(Pack(key), KeyCentre(key));
+    }
+  }
   if (!tracks_occupied_) return;
-  if (tree_->isNodeOccupied(node)) {
+  if (occupied) {
     occupied_.insert(Pack(key));
   } else {
     occupied_.erase(Pack(key));
@@ -177,13 +221,21 @@ void OccupancyTree::UpdateVoxel(const Eigen::Vector3i& key, bool hit) {
 
 void OccupancyTree::MarkOccupied(const std::vector<Eigen::Vector3f>& points_map) {
   const float occupied_log_odds = tree_->getClampingThresMaxLog();
+  KeySetType marked;  // voxels whose surfaces need a refresh
   for (const Eigen::Vector3f& p : points_map) {
     if (!p.allFinite()) continue;
     octomap::OcTreeKey key;
     if (!tree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) continue;
     tree_->setNodeValue(key, occupied_log_odds);
-    if (tracks_occupied_) occupied_.insert(Pack(FromOctreeKey(key)));
+    const Eigen::Vector3i voxel = FromOctreeKey(key);
+    if (tracks_occupied_) occupied_.insert(Pack(voxel));
+    if (surfaces_ != nullptr) {
+      surfaces_->Add(Pack(voxel), KeyCentre(voxel), p, /*sensor_map=*/nullptr);
+      marked.insert(Pack(voxel));
+    }
   }
+  if (surfaces_ == nullptr) return;
+  for (const std::uint64_t key : marked) surfaces_->Refresh(key, KeyCentre(Unpack(key)));
 }
 
 Eigen::Vector3i OccupancyTree::KeyOf(const Eigen::Vector3f& p_map) const {

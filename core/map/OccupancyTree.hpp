@@ -8,6 +8,7 @@
 
 #include "map/DistanceMapOptions.hpp"
 #include "map/KeyBox.hpp"
+#include "map/SurfacePoints.hpp"
 
 namespace octomap {
 class OcTree;
@@ -16,8 +17,11 @@ class OcTree;
 namespace unimap::map {
 
 // The occupancy octree (OctoMap) with the sensor model of DistanceMapOptions,
-// and the voxel/key arithmetic the distance map needs. Change detection is
-// left to the distance transform (EdtRegion). Not thread-safe.
+// and the voxel/key arithmetic the distance map needs. With
+// options.subvoxel_surfaces it also keeps the returns' surface inside every
+// occupied voxel (SurfacePoints), forgotten when the voxel turns free.
+// Change detection is left to the distance transform (EdtRegion). Not
+// thread-safe.
 class OccupancyTree {
  public:
   using KeySetType = std::unordered_set<std::uint64_t>;  // packed voxel keys
@@ -38,7 +42,8 @@ class OccupancyTree {
   // the hits (the only voxels that can have become occupied).
   KeyBox Insert(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& origin_map);
   // Marks the voxel of every (finite) point occupied at the upper clamp, no
-  // ray casting: for prior maps given as point clouds.
+  // ray casting: for prior maps given as point clouds (their surfaces have
+  // no view direction, so they are never signed).
   void MarkOccupied(const std::vector<Eigen::Vector3f>& points_map);
 
   // Key of the voxel containing p (p within +-HalfRangeM()).
@@ -55,6 +60,9 @@ class OccupancyTree {
   double HalfRangeM() const { return 32767.0 * resolution_m_; }
   octomap::OcTree& tree() { return *tree_; }
   const octomap::OcTree& tree() const { return *tree_; }
+  // Sub-voxel surfaces of the occupied voxels; null without
+  // options.subvoxel_surfaces. Voxels occupied by a loaded octree have none.
+  const SurfacePoints* surfaces() const { return surfaces_.get(); }
 
  private:
   void ApplySensorModel();
@@ -65,8 +73,13 @@ class OccupancyTree {
   void ClearOccupiedAlongRays(const Eigen::Vector3f& origin_map,
                               const std::vector<Eigen::Vector3f>& ends_map,
                               const KeySetType& hits);
-  // Applies one hit or miss to key and keeps occupied_ in step.
+  // Applies one hit or miss to key and keeps occupied_ and surfaces_ in step.
   void UpdateVoxel(const Eigen::Vector3i& key, bool hit);
+  // Adds the returns within range to surfaces_ (sensor_map null: unknown).
+  void AddSurfacePoints(const std::vector<Eigen::Vector3f>& points_map,
+                        const Eigen::Vector3f* sensor_map);
+  // Refreshes the surface of key when its voxel is occupied, else forgets it.
+  void SyncSurface(const Eigen::Vector3i& key);
 
   DistanceMapOptions options_;
   std::unique_ptr<octomap::OcTree> tree_;
@@ -74,6 +87,7 @@ class OccupancyTree {
   bool tracks_occupied_;  // occupied_ is maintained (clear_occupied_only ray casting)
   // Packed keys of the occupied voxels, so rays test voxels without tree walks.
   KeySetType occupied_;
+  std::unique_ptr<SurfacePoints> surfaces_;  // null without options.subvoxel_surfaces
 };
 
 }  // namespace unimap::map

@@ -1,9 +1,7 @@
 // `unimap localize`: track the pose of a dataset in a fixed prior map (an
 // OctoMap .bt or a .pcd point cloud), write the trajectory, run.json and,
 // with ground truth, the evaluation (estimate and truth share the map frame).
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -27,9 +25,6 @@
 
 namespace unimap::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-extern "C" void OnLocalizeSigint(int /*signal*/) { g_stop.store(true); }
 
 struct LocalizeCliOptions {
   std::string map_file;         // prior map: .bt (OctoMap) or .pcd (points)
@@ -143,6 +138,9 @@ int RunLocalize(const LocalizeCliOptions& options) {
         pipeline::LocalizerOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
     localizer_options.gpf.threads = options.threads;
     localizer_options.localize_only = true;
+    // A fixed map: distances to the surface inside each voxel, not to voxel
+    // centres (20 s tunnel, rotating Hokuyo: position RMSE 0.014 m vs 0.062 m).
+    localizer_options.map.subvoxel_surfaces = true;
     io::DatasetReader reader(options.data_dir);
     if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
       std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
@@ -161,18 +159,10 @@ int RunLocalize(const LocalizeCliOptions& options) {
     std::cout << ", resolution " << prior->options().resolution_m << " m\n";
 
     const std::filesystem::path out(options.out_dir);
-    std::filesystem::create_directories(out);
     pipeline::Localizer localizer(localizer_options, platform.plugin.plugin, std::move(prior),
                                   initial.given ? std::optional<Eigen::Isometry3d>(initial.T_map_body) : std::nullopt);
-    io::TumTrajectoryWriter trajectory(out / "trajectory.tum");
-    pipeline::RunOptions run_options;
-    run_options.max_duration_s = options.max_duration_s;
-    run_options.stop = &g_stop;
-    if (!options.quiet) run_options.on_progress = PrintRunProgress;
-    const auto previous = std::signal(SIGINT, OnLocalizeSigint);
-    const pipeline::RunSummary summary = pipeline::RunDataset(reader, localizer, trajectory, run_options);
-    std::signal(SIGINT, previous);
-    if (!options.quiet) std::fprintf(stderr, "\n");
+    const pipeline::RunSummary summary =
+        RunLocalizerToFolder(reader, localizer, out, options.max_duration_s, options.quiet);
 
     RunOutputsInput outputs;
     outputs.out_dir = out;

@@ -1,7 +1,5 @@
 // `unimap run`: localise a dataset (odometry mode), write the trajectory,
 // run.json and, with ground truth, the evaluation.
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,9 +18,6 @@
 
 namespace unimap::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
 
 struct RunCliOptions {
   std::string platform_file;    // platform YAML
@@ -45,17 +40,9 @@ int RunRun(const RunCliOptions& options) {
                 << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
     }
     const std::filesystem::path out(options.out_dir);
-    std::filesystem::create_directories(out);
     pipeline::Localizer localizer(localizer_options, platform.plugin.plugin);
-    io::TumTrajectoryWriter trajectory(out / "trajectory.tum");
-    pipeline::RunOptions run_options;
-    run_options.max_duration_s = options.max_duration_s;
-    run_options.stop = &g_stop;
-    if (!options.quiet) run_options.on_progress = PrintRunProgress;
-    const auto previous = std::signal(SIGINT, OnSigint);
-    const pipeline::RunSummary summary = pipeline::RunDataset(reader, localizer, trajectory, run_options);
-    std::signal(SIGINT, previous);
-    if (!options.quiet) std::fprintf(stderr, "\n");
+    const pipeline::RunSummary summary =
+        RunLocalizerToFolder(reader, localizer, out, options.max_duration_s, options.quiet);
 
     RunOutputsInput outputs;
     outputs.out_dir = out;

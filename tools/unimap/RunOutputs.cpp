@@ -1,7 +1,9 @@
 #include "RunOutputs.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -139,6 +141,27 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     return 2;
   }
   return 0;
+}
+
+namespace {
+std::atomic<bool> g_stop{false};
+extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
+}  // namespace
+
+pipeline::RunSummary RunLocalizerToFolder(io::DatasetReader& reader, pipeline::Localizer& localizer,
+                                          const std::filesystem::path& out_dir, double max_duration_s, bool quiet) {
+  std::filesystem::create_directories(out_dir);
+  io::TumTrajectoryWriter trajectory(out_dir / "trajectory.tum");
+  pipeline::RunOptions run_options;
+  run_options.max_duration_s = max_duration_s;
+  run_options.stop = &g_stop;
+  if (!quiet) run_options.on_progress = PrintRunProgress;
+  g_stop.store(false);
+  const auto previous = std::signal(SIGINT, OnSigint);
+  const pipeline::RunSummary summary = pipeline::RunDataset(reader, localizer, trajectory, run_options);
+  std::signal(SIGINT, previous);
+  if (!quiet) std::fprintf(stderr, "\n");
+  return summary;
 }
 
 }  // namespace unimap::cli

@@ -50,6 +50,12 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& stats);
 // The progress line on stderr: scans, scans/s, real-time factor, ETA.
 void PrintRunProgress(const pipeline::RunProgress& progress);
 
+// Runs the localiser over the dataset into out_dir/trajectory.tum (creating
+// out_dir), with a progress line unless quiet; Ctrl-C stops the run and keeps
+// what was processed.
+pipeline::RunSummary RunLocalizerToFolder(io::DatasetReader& reader, pipeline::Localizer& localizer,
+                                          const std::filesystem::path& out_dir, double max_duration_s, bool quiet);
+
 // Writes out_dir/run.json, prints the summary and skip messages, and with
 // ground truth (and at least two poses) evaluates trajectory.tum against it
 // (metrics.json, figures, report.html) and prints the metrics. Returns the

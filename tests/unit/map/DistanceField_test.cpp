@@ -99,6 +99,84 @@ TEST(DistanceField, TrilinearInterpolationIsExactOnALinearField) {
   EXPECT_TRUE(gradient.isZero());
 }
 
+// A signed field: s(p) = z - 3.1 (a plane between the centres z = 3.0 and
+// 3.25 ... of LinearField's grid), negative below.
+float Plane(const V3& p) { return p.z() - 3.1f; }
+
+DistanceField SignedField(float (*value)(const V3&)) {
+  std::vector<std::uint16_t> cells;
+  for (int x = 0; x < kDims.x(); ++x) {
+    for (int y = 0; y < kDims.y(); ++y) {
+      for (int z = 0; z < kDims.z(); ++z) {
+        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::QuantiseSigned(value(centre), kClamp));
+      }
+    }
+  }
+  return DistanceField(kOrigin, kDims, 0.5f, kClamp, std::move(cells), 1,
+                       DistanceField::Encoding::kSigned);
+}
+
+TEST(DistanceField, SignedQuantisationCoversPlusMinusTheClampIn15Bits) {
+  const float step = 2.0f * kClamp / 32767.0f;
+  const std::uint16_t plus_clamp = DistanceField::kMaxSignedSteps << 1;  // bit 0: stencil flag
+  EXPECT_EQ(DistanceField::QuantiseSigned(-kClamp, kClamp), 0u);
+  EXPECT_EQ(DistanceField::QuantiseSigned(-9.0f, kClamp), 0u);
+  EXPECT_EQ(DistanceField::QuantiseSigned(kClamp, kClamp), plus_clamp);
+  EXPECT_EQ(DistanceField::QuantiseSigned(std::numeric_limits<float>::quiet_NaN(), kClamp),
+            plus_clamp);
+  EXPECT_EQ(DistanceField::QuantiseSigned(0.0f, kClamp), 16384u << 1);  // round(16383.5)
+  const DistanceField field = SignedField(Plane);
+  EXPECT_EQ(field.encoding(), DistanceField::Encoding::kSigned);
+  EXPECT_EQ(LinearField().encoding(), DistanceField::Encoding::kUnsigned);
+  for (int z = 0; z < kDims.z(); ++z) {
+    const Eigen::Vector3i cell(1, 2, z);
+    const float truth = Plane(field.CellCentre(cell));
+    EXPECT_NEAR(field.CellValue(cell), truth, step);
+    EXPECT_NEAR(field.CellDistance(cell), std::abs(truth), step);
+    EXPECT_NEAR(field.Distance(field.CellCentre(cell)), std::abs(truth), step);
+  }
+  EXPECT_FLOAT_EQ(field.CellValue(Eigen::Vector3i(0, 0, -1)), kClamp);  // outside
+}
+
+TEST(DistanceField, SignedTrilinearReadsZeroOnTheSurfaceBetweenCentres) {
+  const DistanceField field = SignedField(Plane);
+  for (const V3& p : {V3(-0.6f, 0.4f, 3.1f), V3(0.1f, 1.6f, 2.9f), V3(-0.3f, 1.0f, 3.3f),
+                      V3(-0.3f, 1.1f, 3.6f)}) {
+    V3 gradient;
+    EXPECT_NEAR(field.DistanceTrilinear(p, &gradient), std::abs(Plane(p)), 1e-4f) << p.transpose();
+    if (std::abs(Plane(p)) < 0.01f) continue;  // on it the gradient's sign is arbitrary
+    // The gradient of |s|: away from the plane on both sides.
+    EXPECT_TRUE(gradient.isApprox(V3(0.0f, 0.0f, Plane(p) < 0.0f ? -1.0f : 1.0f), 1e-3f))
+        << gradient.transpose();
+  }
+  // Unsigned, the same distances cannot: between the centres on either
+  // side (0.35 m below, 0.15 m above) the plane reads 0.35 + 0.7 (0.15 - 0.35).
+  std::vector<std::uint16_t> cells;
+  for (int x = 0; x < kDims.x(); ++x) {
+    for (int y = 0; y < kDims.y(); ++y) {
+      for (int z = 0; z < kDims.z(); ++z) {
+        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::Quantise(std::abs(Plane(centre)), kClamp));
+      }
+    }
+  }
+  const DistanceField unsigned_field(kOrigin, kDims, 0.5f, kClamp, std::move(cells), 1);
+  EXPECT_NEAR(unsigned_field.DistanceTrilinear(V3(-0.3f, 1.0f, 3.1f), nullptr), 0.21f, 1e-4f);
+}
+
+// +-0.4 m on the two ends of a 0.5 m edge: no surface between them could
+// make both ends that far from it (|a| + |b| > kMaxCrossingSum x 0.5 m), so
+// the magnitudes are interpolated; +-0.3 m could be one, and is crossed.
+float Jump(const V3& p) { return p.z() < 3.1f ? -0.4f : 0.4f; }
+float Crossing(const V3& p) { return p.z() < 3.1f ? -0.3f : 0.3f; }
+
+TEST(DistanceField, SignChangesNoSurfaceCanExplainInterpolateMagnitudes) {
+  EXPECT_NEAR(SignedField(Jump).DistanceTrilinear(V3(-0.3f, 1.0f, 3.0f), nullptr), 0.4f, 1e-4f);
+  EXPECT_NEAR(SignedField(Crossing).DistanceTrilinear(V3(-0.3f, 1.0f, 3.0f), nullptr), 0.0f, 1e-4f);
+  EXPECT_NEAR(SignedField(Crossing).DistanceTrilinear(V3(-0.3f, 1.0f, 2.9f), nullptr), 0.12f, 1e-4f);
+}
+
 TEST(DistanceField, InconsistentConstructionIsAnInputError) {
   EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, kClamp, std::vector<std::uint16_t>(59), 0),
                InputError);

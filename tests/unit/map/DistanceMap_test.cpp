@@ -28,12 +28,15 @@ using V3 = Eigen::Vector3f;
 
 constexpr float kRes = 0.2f;  // all test surfaces lie on voxel centres (odd multiples of 0.1 m)
 
+// Distances to voxel centres (the brute-force reference below); the
+// sub-voxel surfaces are tested in SurfacePoints_test.cpp.
 DistanceMapOptions TestOptions() {
   DistanceMapOptions options;
   options.resolution_m = kRes;
   options.max_range_m = 6.0;
   options.clamp_distance_m = 1.0;
   options.growth_margin_m = 0.6;
+  options.subvoxel_surfaces = false;
   return options;
 }
 
