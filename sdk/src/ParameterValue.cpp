@@ -1,21 +1,15 @@
 #include "unimap/ParameterValue.hpp"
 
-#include <iomanip>
-#include <sstream>
+#include <charconv>
 
 namespace unimap {
 namespace {
 
+// Shortest text that reads back to the same double ("270", "0.1", "1e-06").
 std::string FormatNumber(double value) {
-  std::ostringstream out;
-  out << std::setprecision(17) << value;
-  // Shortest representation that round-trips: try fewer digits first.
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::ostringstream trial;
-    trial << std::setprecision(digits) << value;
-    if (std::stod(trial.str()) == value) return trial.str();
-  }
-  return out.str();
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
 }
 
 struct Formatter {
