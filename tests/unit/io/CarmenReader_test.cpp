@@ -3,6 +3,8 @@
 #include <bzlib.h>
 #include <gtest/gtest.h>
 
+#include "IoTestSupport.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,30 +17,14 @@
 namespace unimap::io {
 namespace {
 
+using test::WriteText;
+
 namespace fs = std::filesystem;
 
 fs::path Radish(const char* name) { return fs::path(UNIMAP_SHARED_DATA_DIR) / "radish" / name; }
 
 #define SKIP_IF_MISSING(path) \
   if (!fs::exists(path)) GTEST_SKIP() << "real data absent: " << (path) << " (../shared/data not present)"
-
-// A fresh folder under the temp dir, removed at the end of the test.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / ("unimap_carmen_" + name)) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-void WriteText(const fs::path& file, const std::string& text) {
-  std::ofstream(file, std::ios::binary) << text;
-}
 
 // bzip2-compresses `text` into `file` with libbz2.
 void WriteBzip2(const fs::path& file, const std::string& text) {
@@ -136,7 +122,7 @@ const char* const kFixture =
     "ODOM 1.1 2.1 0.0 0.3 0.1 0.0 100.40 host 0.40\n";
 
 TEST(CarmenReaderTest, ParsesFlaserAndOdomFieldsExactly) {
-  TempDir dir("fields");
+  test::ScratchFolder dir;
   WriteText(dir.path() / "a.clf", kFixture);
   CarmenReader reader(dir.path() / "a.clf");
   auto first = reader.Next();
@@ -174,7 +160,7 @@ TEST(CarmenReaderTest, ParsesFlaserAndOdomFieldsExactly) {
 }
 
 TEST(CarmenReaderTest, MalformedLineInsideTheLogIsAnErrorNamingFileAndLine) {
-  TempDir dir("malformed");
+  test::ScratchFolder dir;
   const fs::path file = dir.path() / "bad.clf";
   WriteText(file,
             "# log\n"
@@ -194,7 +180,7 @@ TEST(CarmenReaderTest, MalformedLineInsideTheLogIsAnErrorNamingFileAndLine) {
 }
 
 TEST(CarmenReaderTest, NonNumericFieldIsAnErrorNamingTheLine) {
-  TempDir dir("nonnumeric");
+  test::ScratchFolder dir;
   const fs::path file = dir.path() / "bad.clf";
   WriteText(file, "ODOM 1 2 x 0 0 0 10.0 host 10.0\nODOM 1 2 3 0 0 0 10.2 host 10.2\n");
   CarmenReader reader(file);
@@ -211,7 +197,7 @@ TEST(CarmenReaderTest, NonNumericFieldIsAnErrorNamingTheLine) {
 }
 
 TEST(CarmenReaderTest, TruncatedLastLineIsACountedSkip) {
-  TempDir dir("truncated");
+  test::ScratchFolder dir;
   const fs::path file = dir.path() / "cut.clf";
   // The logger died mid-line: no newline, fields missing.
   WriteText(file, "ODOM 1 2 3 0 0 0 10.0 host 10.0\nFLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 10.1 host 10.1\nFLASER 3 1.0 2.");
@@ -226,7 +212,7 @@ TEST(CarmenReaderTest, TruncatedLastLineIsACountedSkip) {
 }
 
 TEST(CarmenReaderTest, Bzip2LogReadsLikeThePlainOneAndTruncationIsReported) {
-  TempDir dir("bz2");
+  test::ScratchFolder dir;
   WriteBzip2(dir.path() / "a.clf.bz2", kFixture);
   CarmenReader reader(dir.path() / "a.clf.bz2");
   const LogCounts counts = ReadAll(&reader);
@@ -247,7 +233,7 @@ TEST(CarmenReaderTest, Bzip2LogReadsLikeThePlainOneAndTruncationIsReported) {
 }
 
 TEST(CarmenReaderTest, CorruptBzip2DataIsAnError) {
-  TempDir dir("corrupt");
+  test::ScratchFolder dir;
   std::string bytes = "BZh91AY&SY";
   bytes += std::string(200, '\x5a');
   WriteText(dir.path() / "x.clf.bz2", bytes);
@@ -276,7 +262,7 @@ LogCounts ReadDataset(const fs::path& folder) {
 }
 
 TEST(CarmenReaderTest, OutOfOrderFixtureConvertsInTimeOrder) {
-  TempDir dir("reorder");
+  test::ScratchFolder dir;
   WriteText(dir.path() / "a.clf",
             "FLASER 2 1 1 0 0 0 0 0 0 10.0 h 1\n"
             "FLASER 2 1 1 0 0 0 0 0 0 10.5 h 1\n"
@@ -298,7 +284,7 @@ TEST(CarmenReaderTest, OutOfOrderFixtureConvertsInTimeOrder) {
 TEST(CarmenReaderTest, IntelRoundTripKeepsEveryScanAndOdometryLine) {
   const fs::path log = Radish("intel.clf.bz2");
   SKIP_IF_MISSING(log);
-  TempDir dir("intel");
+  test::ScratchFolder dir;
   ConversionOptions options;
   options.input = log;
   options.output = dir.path() / "intel";
@@ -318,7 +304,7 @@ TEST(CarmenReaderTest, IntelRoundTripKeepsEveryScanAndOdometryLine) {
 TEST(CarmenReaderTest, MitCsailRoundTripTakesOdometryFromFlaserFields) {
   const fs::path log = Radish("mit-csail.clf.bz2");
   SKIP_IF_MISSING(log);
-  TempDir dir("mit");
+  test::ScratchFolder dir;
   ConversionOptions options;
   options.input = log;
   options.output = dir.path() / "mit";

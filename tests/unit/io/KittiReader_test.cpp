@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "IoTestSupport.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +18,8 @@
 namespace unimap::io {
 namespace {
 
+using test::WriteText;
+
 namespace fs = std::filesystem;
 
 const fs::path kKitti = fs::path(UNIMAP_SHARED_DATA_DIR) / "kitti00";
@@ -23,21 +27,6 @@ const fs::path kKitti = fs::path(UNIMAP_SHARED_DATA_DIR) / "kitti00";
 #define SKIP_WITHOUT_KITTI()                                                                              \
   if (!fs::exists(kKitti / "000000.pcd")) GTEST_SKIP() << "real data absent: " << kKitti << " (../shared/data not present)"; \
   if (!PcdSupported()) GTEST_SKIP() << "built without PCL: .pcd scans unsupported"
-
-class TempDir {
- public:
-  explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / ("unimap_kitti_" + name)) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-void WriteText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
 void WriteBin(const fs::path& file, const std::vector<float>& xyzi) {
   std::ofstream out(file, std::ios::binary);
@@ -64,7 +53,7 @@ void WriteBinSequence(const fs::path& root) {
 }
 
 TEST(KittiReaderTest, BinSequenceReadsPointsTimesAndLidarPosesExactly) {
-  TempDir dir("bin");
+  test::ScratchFolder dir;
   WriteBinSequence(dir.path());
   KittiReader reader(dir.path());
   ASSERT_EQ(reader.size(), 2u);
@@ -98,7 +87,7 @@ TEST(KittiReaderTest, BinSequenceReadsPointsTimesAndLidarPosesExactly) {
 }
 
 TEST(KittiReaderTest, DamagedSideFilesAndScansAreErrorsNamingTheFile) {
-  TempDir dir("bad");
+  test::ScratchFolder dir;
   WriteBinSequence(dir.path());
   WriteText(dir.path() / "poses.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0 0 1 0 0 0 0 1\n");
   try {
@@ -155,7 +144,7 @@ TEST(KittiReaderTest, Sequence00PcdFramesAndPosesInTheLidarFrame) {
 
 TEST(KittiReaderTest, Sequence00RoundTripThroughTheDatasetFormat) {
   SKIP_WITHOUT_KITTI();
-  TempDir dir("roundtrip");
+  test::ScratchFolder dir;
   ConversionOptions options;
   options.input = kKitti;
   options.output = dir.path() / "kitti00";

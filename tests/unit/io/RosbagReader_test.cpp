@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "IoTestSupport.hpp"
+
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -29,19 +31,6 @@ const fs::path kStageBag = fs::path(UNIMAP_SHARED_DATA_DIR) / "rosbag1_stage_las
 #define SKIP_WITHOUT_STAGE_BAG() \
   SKIP_WITHOUT_ROSBAG();         \
   if (!fs::exists(kStageBag)) GTEST_SKIP() << "real data absent: " << kStageBag << " (../shared/data not present)"
-
-class TempDir {
- public:
-  explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / ("unimap_rosbag_" + name)) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 TEST(RosbagReaderTest, WithoutRosSupportConstructionSaysSo) {
   if (RosbagReader::Supported()) GTEST_SKIP() << "this build reads bags (the error path is for builds without)";
@@ -133,7 +122,7 @@ TEST(RosbagReaderTest, TopicChoicesAndTheirErrors) {
 
 TEST(RosbagReaderTest, StageBagRoundTripThroughTheDatasetFormat) {
   SKIP_WITHOUT_STAGE_BAG();
-  TempDir dir("stage");
+  test::ScratchFolder dir;
   ConversionOptions options;
   options.input = kStageBag;
   options.output = dir.path() / "stage";
@@ -205,7 +194,7 @@ void WriteBz2Bag(const fs::path& file) {
 }
 
 TEST(RosbagReaderTest, Bz2BagWithRelativePointTimesImuAndEncoder) {
-  TempDir dir("bz2");
+  test::ScratchFolder dir;
   const fs::path file = dir.path() / "rig.bag";
   WriteBz2Bag(file);
   RosbagReaderOptions options;
