@@ -16,6 +16,7 @@
 #include "map/DistanceMapStats.hpp"
 #include "map/FieldBoxPlanner.hpp"
 #include "map/KeyBox.hpp"
+#include "map/ScanMap.hpp"
 
 namespace octomap {
 class OcTree;
@@ -40,7 +41,7 @@ class OccupancyTree;
 // inside each occupied voxel (SurfacePoints), signed behind it, instead of
 // to the voxel centres; the published field reads magnitudes. All methods
 // are thread-safe.
-class DistanceMap {
+class DistanceMap : public ScanMap {
  public:
   // An empty map. Throws ConfigError when the options are invalid.
   explicit DistanceMap(const DistanceMapOptions& options);
@@ -58,25 +59,25 @@ class DistanceMap {
                                                  const DistanceMapOptions& options,
                                                  const Eigen::Vector3f& centre_map);
   // Stops the background thread; queued scans not yet integrated are dropped.
-  ~DistanceMap();
+  ~DistanceMap() override;
   DistanceMap(const DistanceMap&) = delete;
   DistanceMap& operator=(const DistanceMap&) = delete;
 
   // Queues a scan (points and sensor origin in the map frame) and returns at
   // once. Non-finite points are dropped and counted; a non-finite origin or
   // one outside the octree's key range throws InputError.
-  void InsertScan(std::vector<Eigen::Vector3f> points_map, const Eigen::Vector3f& sensor_origin_map);
+  void InsertScan(std::vector<Eigen::Vector3f> points_map, const Eigen::Vector3f& sensor_origin_map) override;
   // Tells the box-follows-sensor policy where the sensor is (for localisation
   // in a prior map, where nothing is inserted). Same errors as InsertScan.
-  void UpdateSensorPosition(const Eigen::Vector3f& sensor_map);
+  void UpdateSensorPosition(const Eigen::Vector3f& sensor_map) override;
   // Moves the box centre to centre_map regardless of the policy.
   void SetCenter(const Eigen::Vector3f& centre_map);
 
   // The latest published field (never null; empty until the first update).
-  std::shared_ptr<const DistanceField> Snapshot() const;
+  std::shared_ptr<const DistanceField> Snapshot() const override;
   // Blocks until everything queued so far is published. Rethrows (once) an
   // exception a background update threw since the last call.
-  void WaitForUpdates();
+  void WaitForUpdates() override;
 
   // Centres of all occupied voxels (waits while an update holds the octree).
   std::vector<Eigen::Vector3f> OccupiedVoxelCentres() const;

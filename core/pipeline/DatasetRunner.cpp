@@ -17,7 +17,7 @@ double EventTime(const io::DatasetEvent& event) {
   return io::ScanEndTime(std::get<io::ScanRecord>(event));
 }
 
-void WritePoses(Localizer& localizer, io::TumTrajectoryWriter& trajectory, RunSummary* summary) {
+void WritePoses(EventSink& localizer, io::TumTrajectoryWriter& trajectory, RunSummary* summary) {
   for (const ScanPose& pose : localizer.TakePoses()) {
     trajectory.Write({pose.time_s, pose.T_map_body});
     ++summary->poses_written;
@@ -32,7 +32,7 @@ double PeakRssMb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-RunSummary RunDataset(io::DatasetReader& reader, Localizer& localizer, io::TumTrajectoryWriter& trajectory,
+RunSummary RunDataset(io::DatasetReader& reader, EventSink& localizer, io::TumTrajectoryWriter& trajectory,
                       const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   RunSummary summary;
@@ -62,7 +62,7 @@ RunSummary RunDataset(io::DatasetReader& reader, Localizer& localizer, io::TumTr
       const auto now = Clock::now();
       if (options.on_progress && now - last_report > std::chrono::seconds(1)) {
         last_report = now;
-        options.on_progress({localizer.stats().scans, last_time - first_time, reader.metadata().duration_s,
+        options.on_progress({localizer.ScansReceived(), last_time - first_time, reader.metadata().duration_s,
                              std::chrono::duration<double>(now - start).count()});
       }
     }

@@ -5,7 +5,7 @@
 
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
-#include "pipeline/Localizer.hpp"
+#include "pipeline/EventSink.hpp"
 
 namespace unimap::pipeline {
 
@@ -34,12 +34,12 @@ struct RunSummary {
   std::string error;              // a reader error (truncated or malformed file) that ended the run early
 };
 
-// Feeds every event of a dataset to the localiser in time order and writes
-// each scan pose (T_map_body) to the trajectory. Input errors inside the
-// localiser are counted skips; a reader error (truncated or malformed file)
+// Feeds every event of a dataset to the sink (Localizer or Mapper) in time
+// order and writes each scan pose (T_map_body) to the trajectory. Input
+// errors inside the sink are counted skips; a reader error (truncated or malformed file)
 // ends the run early, keeps what was processed and is reported in
 // RunSummary::error.
-RunSummary RunDataset(io::DatasetReader& reader, Localizer& localizer, io::TumTrajectoryWriter& trajectory,
+RunSummary RunDataset(io::DatasetReader& reader, EventSink& sink, io::TumTrajectoryWriter& trajectory,
                       const RunOptions& options);
 
 // Peak resident set size of this process (MiB).

@@ -46,6 +46,21 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
   if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
 }
 
+Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
+                     std::shared_ptr<map::ScanMap> map, KeyScanSink on_key_scan)
+    : options_(Checked(options)),
+      plugin_(std::move(plugin)),
+      map_(std::move(map)),
+      on_key_scan_(std::move(on_key_scan)),
+      eskf_(options_.eskf),
+      gpf_(options_.gpf),
+      encoder_(std::vector<EncoderSample>{}, 0.5),
+      history_(2.0),
+      accumulator_(options_.scans_per_3d_scan) {
+  if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
+  if (!map_) throw std::invalid_argument("Localizer: no map");
+}
+
 Localizer::~Localizer() = default;
 
 void Localizer::Skip(std::size_t* counter, const std::string& message) {
@@ -238,9 +253,12 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     std::vector<Eigen::Vector3f> scan3d =
         matching::VoxelDownsample(accumulator_.Take(&origin), options_.map.resolution_m, 0, 0);
     try {
+      KeyScan key;
+      if (on_key_scan_) key = {t_end, T_map_body, scan3d, origin};
       map_->InsertScan(std::move(scan3d), origin);
       ++stats_.map_insertions;
       if (options_.wait_for_map) map_->WaitForUpdates();
+      if (on_key_scan_) on_key_scan_(std::move(key));
     } catch (const InputError& e) {  // e.g. a diverged pose outside the octree's key range
       Skip(&stats_.map_errors, "map insertion at " + std::to_string(t_end) + " s: " + e.what());
     }

@@ -1,5 +1,6 @@
 #pragma once
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +11,8 @@
 #include "estimation/Eskf.hpp"
 #include "io/ScanRecord.hpp"
 #include "map/DistanceMap.hpp"
+#include "map/ScanMap.hpp"
+#include "pipeline/EventSink.hpp"
 #include "matching/GaussianParticleFilter.hpp"
 #include "pipeline/LocalizerOptions.hpp"
 #include "pipeline/PoseHistory.hpp"
@@ -19,13 +22,16 @@
 
 namespace unimap::pipeline {
 
-// The localised pose of one scan.
-struct ScanPose {
-  double time_s = 0.0;                                      // the scan's reference (end) time
-  Eigen::Isometry3d T_map_body = Eigen::Isometry3d::Identity();
-  bool matched = false;                                     // a GPF update was applied
-  int points = 0;                                           // deskewed body points
+// One 3D scan (N scans accumulated) as inserted into the map.
+struct KeyScan {
+  double time_s = 0.0;                                          // end time of its last scan
+  Eigen::Isometry3d T_local_body = Eigen::Isometry3d::Identity();  // body pose then (local frame)
+  std::vector<Eigen::Vector3f> points_local;                    // one point per map voxel, local frame
+  Eigen::Vector3f sensor_origin_local = Eigen::Vector3f::Zero();  // mean sensor position of its scans
 };
+
+// Receives each 3D scan right after its insertion into the map.
+using KeyScanSink = std::function<void(KeyScan&&)>;
 
 // Counts of what happened to the input (skips are counted, never fatal).
 struct LocalizerStats {
@@ -49,7 +55,7 @@ struct LocalizerStats {
 // scan is deskewed by the payload plugin, matched by the GPF against the
 // distance map, and its pseudo measurement updates the ESKF; every N scans
 // form a 3D scan inserted into the map (unless localising in a prior map).
-class Localizer {
+class Localizer : public EventSink {
  public:
   // prior_map: localise in a fixed map (options.localize_only) instead of
   // building one. initial_pose: T_map_body at the end of the static window
@@ -57,20 +63,26 @@ class Localizer {
   Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
             std::unique_ptr<map::DistanceMap> prior_map = nullptr,
             std::optional<Eigen::Isometry3d> initial_pose = std::nullopt);
-  ~Localizer();
+  // Odometry into a caller's map (e.g. a SubmapManager): every 3D scan is
+  // inserted into map and then handed to on_key_scan (if set).
+  Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin, std::shared_ptr<map::ScanMap> map,
+            KeyScanSink on_key_scan);
+  ~Localizer() override;
 
   // Data in time order (as DatasetReader::NextEvent delivers it).
-  void AddImu(const ImuSample& sample);
-  void AddEncoder(const EncoderSample& sample);
-  void AddScan(io::ScanRecord scan);
+  void AddImu(const ImuSample& sample) override;
+  void AddEncoder(const EncoderSample& sample) override;
+  void AddScan(io::ScanRecord scan) override;
   // Processes every scan still waiting (end of data).
-  void Finish();
+  void Finish() override;
 
   // Poses produced since the last call, in time order.
-  std::vector<ScanPose> TakePoses();
+  std::vector<ScanPose> TakePoses() override;
+  std::size_t ScansReceived() const override { return stats_.scans; }
   const LocalizerStats& stats() const { return stats_; }
   bool initialized() const { return eskf_.initialized(); }
-  map::DistanceMap& distance_map() { return *map_; }
+  // Position and attitude uncertainty of the current estimate ([dp, dtheta]).
+  Eigen::Matrix<double, 6, 6> PoseCovariance() const { return eskf_.PoseCovariance(); }
 
  private:
   void TryInitialize();
@@ -80,7 +92,8 @@ class Localizer {
 
   LocalizerOptions options_;
   std::shared_ptr<PayloadPlugin> plugin_;
-  std::unique_ptr<map::DistanceMap> map_;
+  std::shared_ptr<map::ScanMap> map_;
+  KeyScanSink on_key_scan_;
   std::optional<Eigen::Isometry3d> initial_pose_;
   estimation::Eskf eskf_;
   matching::GaussianParticleFilter gpf_;

@@ -25,7 +25,7 @@
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "pipeline/DatasetRunner.hpp"
-#include "pipeline/Localizer.hpp"
+#include "pipeline/Mapper.hpp"
 #include "unimap/CoreParameters.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
@@ -102,23 +102,28 @@ std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const
   } cleanup{run.out_dir};
   const sim::SimulationSummary s = sim::Simulator(sim::LoadScenario(file), run).Run();
   const Platform platform = sim::Simulator::LoadPayload(s.payload_source);
-  pipeline::Localizer localizer(
-      pipeline::LocalizerOptions::FromPlatform(CoreParameters::FromMap(platform.parameters)), platform.plugin.plugin);
+  pipeline::Mapper mapper(pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters)),
+                         platform.plugin.plugin);
   io::DatasetReader reader(run.out_dir);
-  const fs::path estimate_file = run.out_dir / "estimate.tum";
+  const fs::path odometry_file = run.out_dir / "odometry.tum";
   pipeline::RunSummary summary;
   {
-    io::TumTrajectoryWriter trajectory(estimate_file);
-    summary = pipeline::RunDataset(reader, localizer, trajectory, pipeline::RunOptions{});
+    io::TumTrajectoryWriter trajectory(odometry_file);
+    summary = pipeline::RunDataset(reader, mapper, trajectory, pipeline::RunOptions{});
   }
   if (!summary.error.empty()) throw Error(summary.error);
   const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(
-      io::ReadTumTrajectory(estimate_file), io::ReadTumTrajectory(run.out_dir / "groundtruth.tum"), {});
+      mapper.OptimizedTrajectory(), io::ReadTumTrajectory(run.out_dir / "groundtruth.tum"), {});
+  const pipeline::MapperStats mapping = mapper.stats();
+  const pipeline::LocalizerStats& stats = mapper.localizer_stats();
   const auto& m = evaluation.metrics;
   const auto opt = [](const std::optional<double>& v, int digits) { return v ? Fixed(*v, digits) : "n/a"; };
   return {{"payload", s.payload + " (" + s.payload_source + ")"},
-          {"data duration", Fixed(summary.data_duration_s, 1) + " s, " + std::to_string(localizer.stats().scans) +
-                                " scans (" + std::to_string(localizer.stats().scans_matched) + " matched)"},
+          {"data duration", Fixed(summary.data_duration_s, 1) + " s, " + std::to_string(stats.scans) +
+                                " scans (" + std::to_string(stats.scans_matched) + " matched)"},
+          {"3D scans / submaps / loop closures", std::to_string(mapping.key_scans) + " / " +
+                                                    std::to_string(mapping.submaps) + " / " +
+                                                    std::to_string(mapping.loop_closures)},
           {"processing time", Fixed(summary.processing_s, 2) + " s"},
           {"real-time factor (data duration / processing time)", Fixed(summary.realtime_factor, 2)},
           {"peak RSS", Fixed(summary.peak_rss_mb, 0) + " MiB"},

@@ -1,13 +1,16 @@
 // `unimap evaluate`: trajectory metrics, plots and an HTML report against
-// ground truth (definitions in docs/evaluation.md).
+// ground truth and, with a map and the simulated world, the map's accuracy
+// (definitions in docs/evaluation.md).
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "Commands.hpp"
+#include "MapEvaluation.hpp"
 #include "TextTable.hpp"
 #include "eval/EvaluationReport.hpp"
 #include "eval/MetricRows.hpp"
@@ -22,6 +25,8 @@ struct EvaluateOptions {
   std::string estimate_file;     // estimated trajectory, TUM
   std::string truth_file;        // ground truth, TUM
   std::string out_dir;           // output folder; empty = the estimate's folder
+  std::string map_file;          // map to score (.pcd or .ply, estimate frame); empty = none
+  std::string world_file;        // true world (world.yaml); empty = world.yaml beside the truth, if any
   double max_time_diff_s = 0.1;  // association tolerance
   double segment_m = 10.0;       // RPE segment length
 };
@@ -56,19 +61,43 @@ int RunEvaluate(const EvaluateOptions& options) {
     } catch (const InputError& e) {
       throw InputError("estimate " + options.estimate_file + " vs truth " + options.truth_file + ": " + e.what());
     }
+    // Map accuracy: unaligned (the estimate's map frame taken as the world
+    // frame) and after the trajectory's ATE alignment (estimate -> truth).
+    std::optional<MapEvaluation> map_evaluation;
+    const std::optional<std::filesystem::path> world_file =
+        ResolveWorldFile(options.world_file, options.truth_file);
+    if (!options.map_file.empty() && world_file) {
+      map_evaluation = EvaluateMapFile(options.map_file, *world_file, evaluation.errors.alignment.T_target_source);
+    } else if (!options.map_file.empty()) {
+      std::cerr << "note: no world file (--world, or world.yaml beside " << options.truth_file
+                << "): map error not computed\n";
+    } else if (!options.world_file.empty()) {
+      std::cerr << "note: --world without --map: map error not computed\n";
+    }
     const std::filesystem::path out_dir =
         options.out_dir.empty() ? std::filesystem::absolute(options.estimate_file).parent_path()
                                 : std::filesystem::path(options.out_dir);
 
     std::cout << "estimate: " << options.estimate_file << "  (" << estimate.size() << " poses)\n"
-              << "truth:    " << options.truth_file << "  (" << truth.size() << " poses)\n\n";
+              << "truth:    " << options.truth_file << "  (" << truth.size() << " poses)\n";
+    if (map_evaluation) {
+      std::cout << "map:      " << options.map_file << "  (" << map_evaluation->unaligned.points << " points)\n"
+                << "world:    " << world_file->string() << '\n';
+    }
+    std::cout << '\n';
     TextTable table({"metric", "value", "meaning"});
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       table.AddRow({row.key, row.value, row.meaning});
     }
+    if (map_evaluation) {
+      for (const eval::MetricRow& row : DescribeMapEvaluation(*map_evaluation)) {
+        table.AddRow({row.key, row.value, row.meaning});
+      }
+    }
     table.Print(std::cout);
     const std::vector<std::filesystem::path> written =
         eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir);
+    if (map_evaluation) AddMapEvaluationToReport(*map_evaluation, out_dir);
     std::cout << "\nwrote:\n";
     for (const auto& file : written) std::cout << "  " << file.string() << '\n';
     return 0;
@@ -83,11 +112,17 @@ int RunEvaluate(const EvaluateOptions& options) {
 void AddEvaluateCommand(CLI::App* app) {
   auto options = std::make_shared<EvaluateOptions>();
   CLI::App* cmd = app->add_subcommand(
-      "evaluate", "Compare an estimated trajectory with ground truth: metrics.json, PNG plots, report.html");
+      "evaluate",
+      "Compare an estimated trajectory with ground truth (and a map with the simulated world): metrics.json, "
+      "PNG plots, report.html");
   cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")
       ->required();
   cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM)")->required();
   cmd->add_option("--out", options->out_dir, "Output folder (default: the estimate's folder)");
+  cmd->add_option("--map", options->map_file,
+                  "Map to score against the world (.pcd or .ply, in the estimate's frame): map_error_* metrics");
+  cmd->add_option("--world", options->world_file,
+                  "True world of simulated data (world.yaml; default: world.yaml beside --truth, if present)");
   cmd->add_option("--max-time-diff-s", options->max_time_diff_s,
                   "Largest time from an estimate pose to each bracketing truth sample")
       ->capture_default_str();

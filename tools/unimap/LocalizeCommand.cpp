@@ -156,30 +156,26 @@ int RunLocalize(const LocalizeCliOptions& options) {
     prior->WaitForUpdates();  // the first distance field is ready before the first scan
     std::cout << "map " << options.map_file;
     if (map_points > 0) std::cout << ": " << map_points << " points";
-    std::cout << ", resolution " << prior->options().resolution_m << " m\n";
+    const double map_resolution_m = prior->options().resolution_m;
+    std::cout << ", resolution " << map_resolution_m << " m\n";
 
     const std::filesystem::path out(options.out_dir);
     pipeline::Localizer localizer(localizer_options, platform.plugin.plugin, std::move(prior),
                                   initial.given ? std::optional<Eigen::Isometry3d>(initial.T_map_body) : std::nullopt);
     const pipeline::RunSummary summary =
-        RunLocalizerToFolder(reader, localizer, out, options.max_duration_s, options.quiet);
+        RunSinkToFolder(reader, localizer, out, "trajectory.tum", options.max_duration_s, options.quiet);
 
-    RunOutputsInput outputs;
-    outputs.out_dir = out;
-    outputs.platform_file = options.platform_file;
-    outputs.payload = platform.plugin.plugin->Name();
-    outputs.data_dir = options.data_dir;
-    outputs.gpf_threads = static_cast<std::size_t>(options.threads);
-    outputs.summary = summary;
-    outputs.stats = localizer.stats();
-    outputs.has_groundtruth = reader.has_groundtruth();
+    RunOutputsInput outputs =
+        MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
+                            options.threads, summary, localizer.stats(), reader.has_groundtruth());
     outputs.world_frame_errors = true;
-    outputs.extra_key = "localize";
-    outputs.extra.Add("map", options.map_file);
-    outputs.extra.Add("map_points", map_points);
-    outputs.extra.Add("map_resolution_m", localizer.distance_map().options().resolution_m);
-    outputs.extra.Add("initial_pose_source", initial.source);
-    outputs.extra.Add("initial_pose", PoseText(initial.T_map_body));
+    JsonObject extra;
+    extra.Add("map", options.map_file);
+    extra.Add("map_points", map_points);
+    extra.Add("map_resolution_m", map_resolution_m);
+    extra.Add("initial_pose_source", initial.source);
+    extra.Add("initial_pose", PoseText(initial.T_map_body));
+    outputs.extras.emplace_back("localize", extra);
     return WriteRunOutputs(outputs);
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -1,5 +1,9 @@
 #include "RunOutputs.hpp"
 
+#include <optional>
+
+#include "MapEvaluation.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -84,6 +88,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   const std::filesystem::path out = in.out_dir;
   const std::filesystem::path truth_file = std::filesystem::path(in.data_dir) / "groundtruth.tum";
   const bool evaluate = in.has_groundtruth && summary.poses_written >= 2;
+  const std::filesystem::path trajectory = out / in.trajectory_file;
 
   JsonObject run;
   run.Add("realtime_factor", summary.realtime_factor);
@@ -99,10 +104,20 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run.Add("dataset", in.data_dir);
   run.Add("gpf_threads", in.gpf_threads);
   run.Add("localizer", LocalizerStatsJson(in.stats));
-  if (!in.extra_key.empty()) run.Add(in.extra_key, in.extra);
+  for (const auto& [key, object] : in.extras) run.Add(key, object);
+  if (evaluate && !in.odometry_file.empty()) {
+    // The trajectory before pose-graph optimisation, for comparison.
+    const eval::TrajectoryEvaluation odometry = eval::EvaluateTrajectory(
+        io::ReadTumTrajectory(out / in.odometry_file), io::ReadTumTrajectory(truth_file), {});
+    JsonObject o;
+    o.Add("file", in.odometry_file);
+    o.Add("ate_rmse_m", odometry.metrics.ate_rmse_m);
+    if (odometry.metrics.drift_percent) o.Add("drift_percent", *odometry.metrics.drift_percent);
+    run.Add("odometry", o);
+  }
   WorldFrameErrors world_errors;
   if (in.world_frame_errors && evaluate) {
-    world_errors = ComputeWorldFrameErrors(io::ReadTumTrajectory(out / "trajectory.tum"),
+    world_errors = ComputeWorldFrameErrors(io::ReadTumTrajectory(trajectory),
                                            io::ReadTumTrajectory(truth_file));
   }
   if (in.world_frame_errors) {
@@ -128,14 +143,24 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   }
   if (evaluate) {
     const auto truth = io::ReadTumTrajectory(truth_file);
-    const auto estimate = io::ReadTumTrajectory(out / "trajectory.tum");
+    const auto estimate = io::ReadTumTrajectory(trajectory);
     const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(estimate, truth, {});
-    eval::WriteEvaluationReport(evaluation, {(out / "trajectory.tum").string(), truth_file.string()}, out);
+    eval::WriteEvaluationReport(evaluation, {trajectory.string(), truth_file.string()}, out);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       std::cout << "  " << row.key << " = " << row.value << '\n';
     }
+    // Map accuracy against the simulated world's true surfaces (map_error_*).
+    const std::optional<std::filesystem::path> world = ResolveWorldFile("", truth_file);
+    if (!in.map_file.empty() && world) {
+      const MapEvaluation map_evaluation =
+          EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source);
+      AddMapEvaluationToReport(map_evaluation, out);
+      for (const eval::MetricRow& row : DescribeMapEvaluation(map_evaluation)) {
+        std::cout << "  " << row.key << " = " << row.value << '\n';
+      }
+    }
   }
-  std::cout << "wrote " << (out / "trajectory.tum").string() << ", " << (out / "run.json").string() << '\n';
+  std::cout << "wrote " << trajectory.string() << ", " << (out / "run.json").string() << '\n';
   if (!summary.error.empty()) {
     std::cerr << "error: " << in.data_dir << ": " << summary.error << " (outputs hold what was processed)\n";
     return 2;
@@ -148,17 +173,34 @@ std::atomic<bool> g_stop{false};
 extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
 }  // namespace
 
-pipeline::RunSummary RunLocalizerToFolder(io::DatasetReader& reader, pipeline::Localizer& localizer,
-                                          const std::filesystem::path& out_dir, double max_duration_s, bool quiet) {
+RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const std::string& platform_file,
+                                    const std::string& payload, const std::string& data_dir, int gpf_threads,
+                                    const pipeline::RunSummary& summary, const pipeline::LocalizerStats& stats,
+                                    bool has_groundtruth) {
+  RunOutputsInput in;
+  in.out_dir = out_dir;
+  in.platform_file = platform_file;
+  in.payload = payload;
+  in.data_dir = data_dir;
+  in.gpf_threads = static_cast<std::size_t>(gpf_threads);
+  in.summary = summary;
+  in.stats = stats;
+  in.has_groundtruth = has_groundtruth;
+  return in;
+}
+
+pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventSink& sink,
+                                     const std::filesystem::path& out_dir, const std::string& trajectory_file,
+                                     double max_duration_s, bool quiet) {
   std::filesystem::create_directories(out_dir);
-  io::TumTrajectoryWriter trajectory(out_dir / "trajectory.tum");
+  io::TumTrajectoryWriter trajectory(out_dir / trajectory_file);
   pipeline::RunOptions run_options;
   run_options.max_duration_s = max_duration_s;
   run_options.stop = &g_stop;
   if (!quiet) run_options.on_progress = PrintRunProgress;
   g_stop.store(false);
   const auto previous = std::signal(SIGINT, OnSigint);
-  const pipeline::RunSummary summary = pipeline::RunDataset(reader, localizer, trajectory, run_options);
+  const pipeline::RunSummary summary = pipeline::RunDataset(reader, sink, trajectory, run_options);
   std::signal(SIGINT, previous);
   if (!quiet) std::fprintf(stderr, "\n");
   return summary;

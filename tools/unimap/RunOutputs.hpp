@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "JsonObject.hpp"
 #include "pipeline/DatasetRunner.hpp"
@@ -26,8 +28,10 @@ struct RunOutputsInput {
   // position_rmse_m, rotation_rmse_deg, position_max_error_m,
   // rotation_max_error_deg and error_poses (null when nothing associates).
   bool world_frame_errors = false;
-  std::string extra_key;               // when not empty, run.json gets extra under this key
-  JsonObject extra;                    // command-specific details (e.g. the prior map)
+  std::string trajectory_file = "trajectory.tum";  // in out_dir: the trajectory evaluated (metrics.json)
+  std::string map_file;                // when not empty (in out_dir) and the dataset has world.yaml: map error
+  std::string odometry_file;           // when not empty (in out_dir): also evaluated, summary in run.json "odometry"
+  std::vector<std::pair<std::string, JsonObject>> extras;  // command-specific objects for run.json (key, object)
 };
 
 // Unaligned errors of an estimate against the truth in the same frame.
@@ -50,11 +54,18 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& stats);
 // The progress line on stderr: scans, scans/s, real-time factor, ETA.
 void PrintRunProgress(const pipeline::RunProgress& progress);
 
-// Runs the localiser over the dataset into out_dir/trajectory.tum (creating
-// out_dir), with a progress line unless quiet; Ctrl-C stops the run and keeps
-// what was processed.
-pipeline::RunSummary RunLocalizerToFolder(io::DatasetReader& reader, pipeline::Localizer& localizer,
-                                          const std::filesystem::path& out_dir, double max_duration_s, bool quiet);
+// The fields every command fills the same way.
+RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const std::string& platform_file,
+                                    const std::string& payload, const std::string& data_dir, int gpf_threads,
+                                    const pipeline::RunSummary& summary, const pipeline::LocalizerStats& stats,
+                                    bool has_groundtruth);
+
+// Runs the sink (Localizer or Mapper) over the dataset, streaming its poses
+// into out_dir/trajectory_file (creating out_dir), with a progress line
+// unless quiet; Ctrl-C stops the run and keeps what was processed.
+pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventSink& sink,
+                                     const std::filesystem::path& out_dir, const std::string& trajectory_file,
+                                     double max_duration_s, bool quiet);
 
 // Writes out_dir/run.json, prints the summary and skip messages, and with
 // ground truth (and at least two poses) evaluates trajectory.tum against it

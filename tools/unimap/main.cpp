@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   unimap::cli::AddLocalizeCommand(&app);
   unimap::cli::AddConvertCommand(&app);
   unimap::cli::AddBenchCommand(&app);
+  unimap::cli::AddDemoCommand(&app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

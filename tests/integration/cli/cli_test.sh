@@ -22,7 +22,7 @@ case $case_name in
   help_lists_subcommands)
     code=$(run --help); [ "$code" = 0 ] || fail "exit $code"
     listed=$(sed -n '/^Subcommands:/,$p' "$work/$case_name.out" | grep -E '^  [a-z]' | awk '{print $1}' | sort | tr '\n' ' ')
-    expected="bench config convert evaluate localize plugins run simulate "
+    expected="bench config convert demo evaluate localize plugins run simulate "
     [ "$listed" = "$expected" ] || fail "listed subcommands '$listed', expected '$expected'"
     for sub in $listed; do
       "$exe" "$sub" --help >"$work/$case_name.$sub.out" 2>&1 || fail "'$sub --help' failed"
@@ -49,6 +49,38 @@ case $case_name in
     f=$(printf 'plugin: no_such_payload\n' | platform)
     code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"
     expect "$f:1: key 'plugin': .*not found" ;;
+  evaluate_map)
+    # A plane world z = 0; the estimate is the truth raised by 1 m, and so is
+    # the map (map points live in the estimate's frame): unaligned errors are
+    # the offsets + 1 m, ATE-aligned ones the offsets 0.1 0.2 0.3 0.4 m.
+    ds="$work/$case_name.ds" out="$work/$case_name.eval"; rm -rf "$ds" "$out"; mkdir -p "$ds"
+    printf -- '- {type: plane, center: [0, 0, 0], size: [100, 100], rpy_deg: [0, 0, 0]}\n' >"$ds/world.yaml"
+    printf '0 0 0 1 0 0 0 1\n1 4 0 1 0 0 0 1\n2 4 4 1.5 0 0 0 1\n3 0 4 1 0 0 0 1\n4 0 0 2 0 0 0 1\n' >"$ds/groundtruth.tum"
+    awk '{ $4 += 1; print }' "$ds/groundtruth.tum" >"$work/$case_name.est.tum"
+    printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 1 1.1\n2 -1 0.8\n-3 2 1.3\n0.5 0.5 1.4\n' >"$work/$case_name.map.ply"
+    code=$(run evaluate --estimate "$work/$case_name.est.tum" --truth "$ds/groundtruth.tum" --out "$out" \
+                        --map "$work/$case_name.map.ply"); [ "$code" = 0 ] || fail "exit $code"
+    expect "^world: +$ds/world.yaml"
+    expect "^map_error_mean_m +1\.1500 "; expect "^map_error_p95_m +1\.4000 "; expect "^map_error_max_m +1\.4000 "
+    expect "^map_points +4 "; expect "^map_error_aligned_mean_m +0\.2500 "; expect "^map_error_aligned_max_m +0\.4000 "
+    for key in map_error_mean_m map_error_p95_m map_error_max_m map_error_aligned_mean_m map_error_aligned_p95_m \
+               map_error_aligned_max_m; do
+      grep -Eq "^  \"$key\": [0-9.e-]+,?$" "$out/metrics.json" || fail "metrics.json lacks a number for $key"
+      grep -q "<code>$key</code>" "$out/report.html" || fail "report.html lacks $key"
+    done
+    grep -Eq '^  "map_points": 4,?$' "$out/metrics.json" || fail "metrics.json: map_points is not 4"
+    if command -v python3 >/dev/null; then
+      python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$out/metrics.json" || fail "metrics.json is not JSON"
+    fi
+    # Without a world there is nothing to compare with: a note, no map keys.
+    rm "$ds/world.yaml"
+    code=$(run evaluate --estimate "$work/$case_name.est.tum" --truth "$ds/groundtruth.tum" --out "$out" \
+                        --map "$work/$case_name.map.ply"); [ "$code" = 0 ] || fail "exit $code without a world"
+    expect "note: no world file"; ! grep -q map_error "$out/metrics.json" || fail "map keys without a world"
+    # A named world that does not exist is an error.
+    code=$(run evaluate --estimate "$work/$case_name.est.tum" --truth "$ds/groundtruth.tum" --out "$out" \
+                        --map "$work/$case_name.map.ply" --world "$ds/nope.yaml"); [ "$code" = 2 ] || fail "exit $code"
+    expect "error: world $ds/nope.yaml: no such file" ;;
   *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

@@ -2,6 +2,7 @@
 // with corrupted input: every corruption ends in a clear error or counted
 // skips, never a crash, and the poses processed are kept.
 #include "pipeline/DatasetRunner.hpp"
+#include "pipeline/Localizer.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -1,0 +1,77 @@
+#include "graph/LoopClosureOptions.hpp"
+
+#include <cmath>
+
+namespace unimap::graph {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool Positive(double value) { return std::isfinite(value) && value > 0.0; }
+bool NonNegative(double value) { return std::isfinite(value) && value >= 0.0; }
+bool Fraction(double value) { return std::isfinite(value) && value >= 0.0 && value <= 1.0; }
+
+bool Fail(std::string* why, const char* reason) {
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+}  // namespace
+
+bool LoopClosureOptions::IsValid(std::string* why) const {
+  if (!Positive(search_resolution_m) || !Positive(search_kernel_m) || !Positive(fine_resolution_m) ||
+      !Positive(fine_clamp_m)) {
+    return Fail(why, "search_resolution_m, search_kernel_m, fine_resolution_m and fine_clamp_m must be positive");
+  }
+  if (search_kernel_m > 10.0 * search_resolution_m) {
+    return Fail(why, "search_kernel_m must be at most 10 search_resolution_m");
+  }
+  if (search_levels < 1 || search_levels > 8) return Fail(why, "search_levels must be in [1, 8]");
+  if (fine_clamp_m > 10.0 * fine_resolution_m) return Fail(why, "fine_clamp_m must be at most 10 fine_resolution_m");
+  if (!Positive(normal_cell_m) || !Fraction(planarity_ratio)) {
+    return Fail(why, "normal_cell_m must be positive and planarity_ratio in [0, 1]");
+  }
+  if (fine_clamp_m < fine_resolution_m) return Fail(why, "fine_clamp_m must be at least fine_resolution_m");
+  if (!NonNegative(search_voxel_m) || !NonNegative(refine_voxel_m)) {
+    return Fail(why, "search_voxel_m and refine_voxel_m must be >= 0");
+  }
+  if (max_search_points < 10 || max_refine_points < 10 || min_scan_points < 1 ||
+      min_scan_points > max_refine_points) {
+    return Fail(why,
+                "max_search_points and max_refine_points must be >= 10, min_scan_points in [1, max_refine_points]");
+  }
+  if (!NonNegative(z_window_m) || !NonNegative(yaw_window_rad) || yaw_window_rad > kPi) {
+    return Fail(why, "z_window_m must be >= 0 and yaw_window_rad in [0, pi]");
+  }
+  if (!Positive(min_yaw_step_rad) || !Positive(max_yaw_step_rad) || min_yaw_step_rad > max_yaw_step_rad) {
+    return Fail(why, "min_yaw_step_rad and max_yaw_step_rad must be positive, min <= max");
+  }
+  if (!NonNegative(ambiguity_margin_m)) return Fail(why, "ambiguity_margin_m must be >= 0");
+  if (max_candidates < 2) return Fail(why, "max_candidates must be at least 2 (the best and an alternative)");
+  if (!Fraction(min_search_score) || !Fraction(candidate_score_ratio)) {
+    return Fail(why, "min_search_score and candidate_score_ratio must be in [0, 1]");
+  }
+  if (max_iterations < 1) return Fail(why, "max_iterations must be at least 1");
+  if (!Positive(huber_m)) return Fail(why, "huber_m must be positive");
+  if (!Positive(inlier_distance_m) || inlier_distance_m > fine_clamp_m) {
+    return Fail(why, "inlier_distance_m must be positive and at most fine_clamp_m");
+  }
+  if (!Fraction(min_score) || !Fraction(max_ambiguity)) {
+    return Fail(why, "min_score and max_ambiguity must be in [0, 1]");
+  }
+  if (!Positive(ambiguity_floor) || ambiguity_floor > 1.0) return Fail(why, "ambiguity_floor must be in (0, 1]");
+  if (!Positive(distinct_translation_m) || !Positive(distinct_rotation_rad)) {
+    return Fail(why, "distinct_translation_m and distinct_rotation_rad must be positive");
+  }
+  if (!Positive(max_position_sigma_m) || !Positive(max_rotation_sigma_rad)) {
+    return Fail(why, "max_position_sigma_m and max_rotation_sigma_rad must be positive");
+  }
+  if (!Positive(effective_points)) return Fail(why, "effective_points must be positive");
+  if (!NonNegative(min_sigma_position_m) || !NonNegative(min_sigma_rotation_rad)) {
+    return Fail(why, "min_sigma_position_m and min_sigma_rotation_rad must be >= 0");
+  }
+  return true;
+}
+
+}  // namespace unimap::graph

@@ -1,0 +1,30 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "map/DistanceField.hpp"
+
+namespace unimap::map {
+
+// What the localiser needs from a map: distance-field snapshots to match
+// against and a place to insert 3D scans. Implemented by DistanceMap (one
+// map, e.g. a prior) and SubmapManager (the paper's matching and growing
+// submaps). Implementations are thread-safe.
+class ScanMap {
+ public:
+  virtual ~ScanMap() = default;
+  // The field to match against now (never null; empty until the first update).
+  virtual std::shared_ptr<const DistanceField> Snapshot() const = 0;
+  // Queues a 3D scan (points and sensor origin in the map frame). Throws
+  // InputError for a non-finite origin or one outside the map's key range.
+  virtual void InsertScan(std::vector<Eigen::Vector3f> points_map, const Eigen::Vector3f& sensor_origin_map) = 0;
+  // Where the sensor is (lets distance boxes follow it). Same errors as InsertScan.
+  virtual void UpdateSensorPosition(const Eigen::Vector3f& sensor_map) = 0;
+  // Blocks until everything queued so far is published; rethrows a
+  // background update's error once.
+  virtual void WaitForUpdates() = 0;
+};
+
+}  // namespace unimap::map

@@ -1,0 +1,51 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "map/DistanceMap.hpp"
+#include "map/DistanceMapOptions.hpp"
+
+namespace unimap::map {
+
+// What a submap keeps once retired: no live distance map, only its surface
+// (occupied voxel centres) in its own frame, for loop closure and the map.
+struct RetiredSubmap {
+  int id = 0;                                                  // SubmapManager id
+  Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();  // frame at creation (local odometry frame)
+  std::vector<Eigen::Vector3f> points_submap;                  // occupied voxel centres, submap frame
+  int scans_3d = 0;                                            // 3D scans it received
+};
+
+// One submap (DESIGN.md 1.4): an occupancy octree with its incremental
+// distance map, in the local odometry frame, and the frame it was created
+// in (at the sensor, axes of the local frame). Not thread-safe on its own:
+// SubmapManager serialises access.
+class Submap {
+ public:
+  Submap(int id, const Eigen::Vector3d& origin_local, const DistanceMapOptions& options);
+  Submap(const Submap&) = delete;
+  Submap& operator=(const Submap&) = delete;
+
+  int id() const { return id_; }
+  const Eigen::Isometry3d& T_local_submap() const { return T_local_submap_; }
+  int scans_3d() const { return scans_3d_; }
+  DistanceMap& distance_map() { return *map_; }
+  const DistanceMap& distance_map() const { return *map_; }
+
+  // Queues a 3D scan (local frame) into the distance map and counts it.
+  // Throws InputError as DistanceMap::InsertScan.
+  void Insert(std::vector<Eigen::Vector3f> points_local, const Eigen::Vector3f& sensor_origin_local);
+  // Waits for pending updates, then hands over the surface and drops the
+  // live map. The submap must not be used afterwards.
+  RetiredSubmap Retire();
+
+ private:
+  int id_;
+  Eigen::Isometry3d T_local_submap_;
+  int scans_3d_ = 0;
+  std::unique_ptr<DistanceMap> map_;
+};
+
+}  // namespace unimap::map

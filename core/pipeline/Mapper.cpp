@@ -1,0 +1,148 @@
+#include "pipeline/Mapper.hpp"
+
+#include "matching/VoxelDownsampler.hpp"
+#include "unimap/Errors.hpp"
+
+namespace unimap::pipeline {
+namespace {
+
+constexpr std::size_t kMaxMessages = 50;
+
+MapperOptions Checked(const MapperOptions& options) {
+  std::string why;
+  if (!options.IsValid(&why)) throw ConfigError("", 0, "", "mapper options: " + why);
+  return options;
+}
+
+}  // namespace
+
+Mapper::Mapper(const MapperOptions& options, std::shared_ptr<PayloadPlugin> plugin)
+    : options_(Checked(options)),
+      submaps_(std::make_shared<map::SubmapManager>(options_.submaps)),
+      graph_(options_.scan_sigma_position_m, options_.scan_sigma_rotation_rad),
+      finder_(options_.loop_search, options_.loop_closure),
+      optimizer_(options_.graph) {
+  LocalizerOptions localizer_options = options_.localizer;
+  localizer_options.localize_only = false;
+  localizer_ = std::make_unique<Localizer>(localizer_options, std::move(plugin), submaps_,
+                                           [this](KeyScan&& key) { OnKeyScan(std::move(key)); });
+}
+
+Mapper::~Mapper() = default;
+
+void Mapper::Note(const std::string& message) {
+  if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(message);
+}
+
+void Mapper::AddImu(const ImuSample& sample) {
+  localizer_->AddImu(sample);
+  PollOptimiser(false);
+}
+
+void Mapper::AddEncoder(const EncoderSample& sample) { localizer_->AddEncoder(sample); }
+
+void Mapper::AddScan(io::ScanRecord scan) { localizer_->AddScan(std::move(scan)); }
+
+void Mapper::Finish() {
+  localizer_->Finish();
+  PollOptimiser(true);
+  if (any_closure_) {
+    // The final trajectory and map come from a graph holding every constraint.
+    optimizer_.Submit(graph_.graph());
+    PollOptimiser(true);
+  }
+}
+
+std::vector<ScanPose> Mapper::TakePoses() {
+  std::vector<ScanPose> poses = localizer_->TakePoses();
+  local_poses_.insert(local_poses_.end(), poses.begin(), poses.end());
+  return poses;
+}
+
+void Mapper::OnKeyScan(KeyScan&& key) {
+  const map::SubmapInsertion insertion = submaps_->last_insertion();
+  const int k = graph_.AddKeyScan(key.time_s, key.T_local_body, insertion);
+  const Eigen::Vector3d position = key.T_local_body.translation();
+  if (k > 0) path_m_ += (position - last_key_position_).norm();
+  last_key_position_ = position;
+
+  // The 3D scan in the body frame, kept for loop closure and the final map.
+  const Eigen::Isometry3f T_body_local = key.T_local_body.inverse().cast<float>();
+  std::vector<Eigen::Vector3f> points_body;
+  points_body.reserve(key.points_local.size());
+  for (const Eigen::Vector3f& p : key.points_local) points_body.push_back(T_body_local * p);
+
+  for (map::RetiredSubmap& retired : submaps_->TakeRetired()) finder_.AddRetired(std::move(retired), path_m_);
+
+  if (options_.loop_search.enabled && k % options_.loop_search.every_3d_scans == 0) {
+    const Eigen::Isometry3d T_world_body = graph_.T_world_local() * key.T_local_body;
+    for (const LoopClosure& closure : finder_.Search(k, points_body, T_world_body, path_m_, graph_)) {
+      graph_.AddLoopClosure(closure);
+      if (!any_closure_) stats_.first_loop_closure_time_s = key.time_s;
+      ++closures_since_submit_;
+      any_closure_ = true;
+    }
+    for (const std::string& m : finder_.TakeMessages()) Note(m);
+  }
+  key_points_body_.push_back(std::move(points_body));
+
+  // Every I 3D scans (once a loop closure exists: without one the graph,
+  // built from a single trajectory, is already at its optimum).
+  if (any_closure_ && (k + 1) % options_.scans_3d_per_optimization == 0) SubmitOptimisation();
+}
+
+void Mapper::SubmitOptimisation() {
+  PollOptimiser(false);
+  if (optimizer_.Submit(graph_.graph())) closures_since_submit_ = 0;
+  if (options_.wait_for_background) PollOptimiser(true);
+}
+
+void Mapper::PollOptimiser(bool wait) {
+  if (wait) optimizer_.Wait();
+  std::optional<graph::OptimizedPoses> result = optimizer_.TakeResult();
+  if (!result) return;
+  stats_.optimisation_s += result->summary.solve_s;
+  if (!result->summary.ok) {
+    ++stats_.optimisation_failures;
+    Note("optimisation failed: " + result->summary.reason);
+    return;
+  }
+  ++stats_.optimisations;
+  graph_.ApplyOptimized(result->T_world_node);
+}
+
+std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
+  std::vector<StampedPose> out;
+  out.reserve(local_poses_.size());
+  for (const ScanPose& p : local_poses_) out.push_back({p.time_s, graph_.ToWorld(p.time_s, p.T_map_body)});
+  return out;
+}
+
+std::vector<StampedPose> Mapper::KeyScanTrajectory() const {
+  std::vector<StampedPose> out;
+  for (std::size_t k = 0; k < graph_.key_scan_count(); ++k) {
+    out.push_back({graph_.key_scan_time(static_cast<int>(k)), graph_.T_world_key(static_cast<int>(k))});
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
+  std::vector<Eigen::Vector3f> points;
+  for (std::size_t k = 0; k < key_points_body_.size(); ++k) {
+    const Eigen::Isometry3f T_world_body = graph_.T_world_key(static_cast<int>(k)).cast<float>();
+    for (const Eigen::Vector3f& p : key_points_body_[k]) points.push_back(T_world_body * p);
+  }
+  return matching::VoxelDownsample(points, voxel_m, 0, 0);
+}
+
+MapperStats Mapper::stats() const {
+  MapperStats s = stats_;
+  s.key_scans = graph_.key_scan_count();
+  s.submaps = submaps_->started_count();
+  s.retired_submaps = finder_.retired_count();
+  s.loop_closures = graph_.loop_closures();
+  s.loop_search = finder_.stats();
+  return s;
+}
+
+}  // namespace unimap::pipeline

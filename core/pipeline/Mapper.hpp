@@ -1,0 +1,88 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "graph/BackgroundOptimizer.hpp"
+#include "map/SubmapManager.hpp"
+#include "pipeline/EventSink.hpp"
+#include "pipeline/Localizer.hpp"
+#include "pipeline/LoopClosureFinder.hpp"
+#include "pipeline/MapperOptions.hpp"
+#include "pipeline/TrajectoryGraph.hpp"
+#include "unimap/PayloadPlugin.hpp"
+#include "unimap/StampedPose.hpp"
+
+namespace unimap::pipeline {
+
+// What the mapping back end did.
+struct MapperStats {
+  std::size_t key_scans = 0;          // 3D scans (pose-graph scan nodes)
+  int submaps = 0;                    // submaps started
+  std::size_t retired_submaps = 0;    // submaps retired (kept for loop closure)
+  std::size_t loop_closures = 0;      // accepted loop-closure constraints
+  std::size_t optimisations = 0;      // pose-graph optimisations finished and applied
+  std::size_t optimisation_failures = 0;  // optimisations that reported !ok (result ignored)
+  double optimisation_s = 0.0;        // total solver time
+  double first_loop_closure_time_s = -1.0;  // time of the 3D scan of the first accepted closure (-1: none)
+  LoopSearchStats loop_search;        // candidate counts
+  std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
+};
+
+// The paper's full system (DESIGN.md 1): wires the Localizer (plugin ->
+// deskew -> GPF -> ESKF), the SubmapManager it matches against and inserts
+// into, the TrajectoryGraph (a node per 3D scan and per submap), the
+// LoopClosureFinder and the background pose-graph optimiser. The localiser
+// works in its local odometry frame; optimisation only changes the
+// correction T_world_local and the final trajectory and map.
+class Mapper : public EventSink {
+ public:
+  // Throws ConfigError when the options are invalid.
+  Mapper(const MapperOptions& options, std::shared_ptr<PayloadPlugin> plugin);
+  ~Mapper() override;
+
+  void AddImu(const ImuSample& sample) override;
+  void AddEncoder(const EncoderSample& sample) override;
+  void AddScan(io::ScanRecord scan) override;
+  // Processes the remaining scans and runs a final optimisation.
+  void Finish() override;
+  // Localised poses (local odometry frame, as the filter estimated them) since the last call.
+  std::vector<ScanPose> TakePoses() override;
+  std::size_t ScansReceived() const override { return localizer_->ScansReceived(); }
+
+  // Every scan pose so far in the world frame, corrected by the optimised
+  // pose graph (after Finish: the final trajectory).
+  std::vector<StampedPose> OptimizedTrajectory() const;
+  // Every key scan's points in the world frame (optimised poses), one per
+  // voxel_m voxel.
+  std::vector<Eigen::Vector3f> MapPoints(double voxel_m) const;
+  // The key scans' poses in the world frame (optimised), in time order.
+  std::vector<StampedPose> KeyScanTrajectory() const;
+  const Eigen::Isometry3d& T_world_local() const { return graph_.T_world_local(); }
+  const LocalizerStats& localizer_stats() const { return localizer_->stats(); }
+  MapperStats stats() const;
+
+ private:
+  void OnKeyScan(KeyScan&& key);
+  void SubmitOptimisation();
+  void PollOptimiser(bool wait);
+  void Note(const std::string& message);
+
+  MapperOptions options_;
+  std::shared_ptr<map::SubmapManager> submaps_;
+  TrajectoryGraph graph_;
+  LoopClosureFinder finder_;
+  graph::BackgroundOptimizer optimizer_;
+  std::vector<ScanPose> local_poses_;                       // every pose so far (local frame)
+  std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan
+  double path_m_ = 0.0;                                     // distance travelled by the key scans
+  Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
+  std::size_t closures_since_submit_ = 0;
+  bool any_closure_ = false;
+  MapperStats stats_;
+  std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above
+};
+
+}  // namespace unimap::pipeline

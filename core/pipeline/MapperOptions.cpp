@@ -1,0 +1,53 @@
+#include "pipeline/MapperOptions.hpp"
+
+#include <cmath>
+
+namespace unimap::pipeline {
+namespace {
+
+bool Fail(std::string* why, const std::string& reason) {
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+}  // namespace
+
+bool LoopSearchOptions::IsValid(std::string* why) const {
+  if (every_3d_scans < 1) return Fail(why, "loop_search.every_3d_scans must be >= 1");
+  if (skip_recent_submaps < 0) return Fail(why, "loop_search.skip_recent_submaps must be >= 0");
+  if (!(min_radius_m > 0.0) || !(max_radius_m >= min_radius_m) || !std::isfinite(max_radius_m)) {
+    return Fail(why, "loop_search radii must satisfy 0 < min_radius_m <= max_radius_m (finite)");
+  }
+  if (!(radius_per_path_m >= 0.0) || !(submap_reach_m >= 0.0) || !(min_path_m >= 0.0)) {
+    return Fail(why, "loop_search.radius_per_path_m, submap_reach_m and min_path_m must be >= 0");
+  }
+  if (max_candidates < 1 || max_cached_matchers < 1) {
+    return Fail(why, "loop_search.max_candidates and max_cached_matchers must be >= 1");
+  }
+  return true;
+}
+
+bool MapperOptions::IsValid(std::string* why) const {
+  std::string reason;
+  if (!localizer.IsValid(&reason)) return Fail(why, "localizer: " + reason);
+  if (!submaps.IsValid(&reason)) return Fail(why, "submaps: " + reason);
+  if (!graph.IsValid(&reason)) return Fail(why, "graph: " + reason);
+  if (!loop_closure.IsValid(&reason)) return Fail(why, "loop_closure: " + reason);
+  if (!loop_search.IsValid(&reason)) return Fail(why, reason);
+  if (scans_3d_per_optimization < 1) return Fail(why, "scans_3d_per_optimization must be >= 1");
+  if (!(scan_sigma_position_m > 0.0) || !(scan_sigma_rotation_rad > 0.0)) {
+    return Fail(why, "scan_sigma_position_m and scan_sigma_rotation_rad must be > 0");
+  }
+  return true;
+}
+
+MapperOptions MapperOptions::FromPlatform(const CoreParameters& core) {
+  MapperOptions o;
+  o.localizer = LocalizerOptions::FromPlatform(core);
+  o.submaps.scans_3d_per_submap = core.scans_3d_per_submap;
+  o.submaps.map = o.localizer.map;
+  o.scans_3d_per_optimization = core.scans_3d_per_optimization;
+  return o;
+}
+
+}  // namespace unimap::pipeline

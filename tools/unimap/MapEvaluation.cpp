@@ -1,0 +1,188 @@
+#include "MapEvaluation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "WorldLoader.hpp"
+#include "eval/AtomicFile.hpp"
+#include "eval/HtmlReport.hpp"
+#include "eval/MetricsJson.hpp"
+#include "io/PcdPointLoader.hpp"
+#include "io/PlyReader.hpp"
+#include "unimap/Errors.hpp"
+
+namespace unimap::cli {
+namespace {
+
+std::string Lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string Fixed(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.4f", value);
+  return buffer;
+}
+
+std::string ReadWholeFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(file.string() + ": cannot read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// (key, full-precision JSON value, display value, meaning) of every map metric.
+struct MapMetric {
+  std::string key;
+  std::string json;
+  std::string shown;
+  std::string meaning;
+};
+
+std::vector<MapMetric> Metrics(const MapEvaluation& e) {
+  const eval::MapErrorStats& u = e.unaligned;
+  const auto aligned = [&](double eval::MapErrorStats::*field) {
+    return e.aligned ? eval::JsonNumber((*e.aligned).*field) : std::string("null");
+  };
+  const auto aligned_shown = [&](double eval::MapErrorStats::*field) {
+    return e.aligned ? Fixed((*e.aligned).*field) : std::string("n/a");
+  };
+  using S = eval::MapErrorStats;
+  return {
+      {"map_error_mean_m", eval::JsonNumber(u.mean_m), Fixed(u.mean_m),
+       "mean distance of the map points to the true surfaces (no alignment), m"},
+      {"map_error_p95_m", eval::JsonNumber(u.p95_m), Fixed(u.p95_m),
+       "95th percentile (nearest rank) of that distance, m"},
+      {"map_error_max_m", eval::JsonNumber(u.max_m), Fixed(u.max_m), "largest distance of a map point, m"},
+      {"map_points", std::to_string(u.points), std::to_string(u.points), "map points evaluated"},
+      {"map_error_aligned_mean_m", aligned(&S::mean_m), aligned_shown(&S::mean_m),
+       "mean distance after moving the map by the ATE alignment, m"},
+      {"map_error_aligned_p95_m", aligned(&S::p95_m), aligned_shown(&S::p95_m),
+       "95th percentile after the ATE alignment, m"},
+      {"map_error_aligned_max_m", aligned(&S::max_m), aligned_shown(&S::max_m),
+       "largest distance after the ATE alignment, m"},
+  };
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3f> LoadMapPoints(const std::filesystem::path& map_file) {
+  if (!std::filesystem::is_regular_file(map_file)) throw InputError("map " + map_file.string() + ": no such file");
+  const std::string extension = Lowercase(map_file.extension().string());
+  if (extension == ".ply") return io::ReadPlyVertices(map_file);
+  if (extension == ".pcd") {
+    std::vector<Eigen::Vector4f> xyzi;
+    io::LoadPcdXyzi(map_file, &xyzi);
+    std::vector<Eigen::Vector3f> points;
+    points.reserve(xyzi.size());
+    for (const Eigen::Vector4f& p : xyzi) points.push_back(p.head<3>());
+    return points;
+  }
+  throw InputError("map " + map_file.string() + ": unknown extension '" + extension + "' (expected .ply or .pcd)");
+}
+
+sim::World LoadWorldFile(const std::filesystem::path& world_file) {
+  if (!std::filesystem::is_regular_file(world_file)) {
+    throw InputError("world " + world_file.string() + ": no such file");
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(world_file.string());
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(world_file.string(), e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "YAML syntax: " + e.msg);
+  }
+  return sim::LoadWorld(root, world_file.string());
+}
+
+std::optional<std::filesystem::path> ResolveWorldFile(const std::string& world_option,
+                                                      const std::filesystem::path& truth_file) {
+  if (!world_option.empty()) {
+    if (!std::filesystem::is_regular_file(world_option)) throw InputError("world " + world_option + ": no such file");
+    return std::filesystem::path(world_option);
+  }
+  const std::filesystem::path beside = truth_file.parent_path() / "world.yaml";
+  if (std::filesystem::is_regular_file(beside)) return beside;
+  return std::nullopt;
+}
+
+MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::filesystem::path& world_file,
+                              const std::optional<Eigen::Isometry3d>& T_world_map) {
+  const sim::World world = LoadWorldFile(world_file);
+  if (world.size() == 0) throw InputError("world " + world_file.string() + ": has no primitives");
+  std::vector<Eigen::Vector3f> points_map = LoadMapPoints(map_file);
+  const auto distance = [&world](const Eigen::Vector3d& p_world) { return world.SurfaceDistance(p_world); };
+  MapEvaluation result;
+  result.map_file = map_file;
+  result.world_file = world_file;
+  try {
+    result.unaligned = eval::ComputeMapError(points_map, distance);
+    if (T_world_map) {
+      const Eigen::Isometry3f T = T_world_map->cast<float>();
+      for (Eigen::Vector3f& p : points_map) p = T * p;  // p_world = T_world_map p_map
+      result.aligned = eval::ComputeMapError(points_map, distance);
+    }
+  } catch (const InputError& e) {
+    throw InputError("map " + map_file.string() + ": " + e.what());
+  }
+  return result;
+}
+
+std::vector<std::string> MapEvaluationJsonKeys() {
+  std::vector<std::string> keys;
+  for (const MapMetric& m : Metrics(MapEvaluation{})) keys.push_back(m.key);
+  return keys;
+}
+
+std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation) {
+  std::vector<eval::MetricRow> rows;
+  for (const MapMetric& m : Metrics(evaluation)) rows.push_back({m.key, m.shown, m.meaning});
+  return rows;
+}
+
+void AddMapEvaluationToReport(const MapEvaluation& evaluation, const std::filesystem::path& out_dir) {
+  const std::vector<MapMetric> metrics = Metrics(evaluation);
+
+  // metrics.json: one flat object; the keys go before its closing brace.
+  const std::filesystem::path json_file = out_dir / "metrics.json";
+  std::string json = ReadWholeFile(json_file);
+  const std::size_t close = json.rfind('}');
+  const std::size_t last = close == std::string::npos || close == 0 ? std::string::npos
+                                                                     : json.find_last_not_of(" \n", close - 1);
+  if (last == std::string::npos || json[last] == '{' || json.front() != '{') {
+    throw Error(json_file.string() + ": not a metrics object written by unimap evaluate");
+  }
+  if (json.find("\"" + metrics.front().key + "\"") != std::string::npos) {
+    throw Error(json_file.string() + ": already holds the map metrics");
+  }
+  std::string added;
+  for (const MapMetric& m : metrics) added += ",\n  \"" + m.key + "\": " + m.json;
+  json.insert(last + 1, added);
+  eval::WriteFileAtomically(json_file, json);
+
+  // report.html: rows at the end of the metrics table, the sources below it.
+  const std::filesystem::path html_file = out_dir / "report.html";
+  std::string html = ReadWholeFile(html_file);
+  const std::string table_end = "</table>\n";
+  const std::size_t at = html.find(table_end);
+  if (at == std::string::npos) throw Error(html_file.string() + ": no metrics table");
+  std::string rows;
+  for (const MapMetric& m : metrics) {
+    rows += "<tr><td><code>" + eval::EscapeHtml(m.key) + "</code></td><td class=\"v\">" +
+            eval::EscapeHtml(m.shown) + "</td><td>" + eval::EscapeHtml(m.meaning) + "</td></tr>\n";
+  }
+  rows += table_end + "<p>Map: <code>" + eval::EscapeHtml(evaluation.map_file.string()) +
+          "</code><br>\nWorld (true surfaces): <code>" + eval::EscapeHtml(evaluation.world_file.string()) +
+          "</code></p>\n";
+  html.replace(at, table_end.size(), rows);
+  eval::WriteFileAtomically(html_file, html);
+}
+
+}  // namespace unimap::cli

@@ -1,0 +1,70 @@
+#pragma once
+// Map accuracy against a simulated world, shared by `unimap evaluate --map`
+// and `unimap run` (definitions in docs/evaluation.md, section 4).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "World.hpp"
+#include "eval/MapError.hpp"
+#include "eval/MetricRows.hpp"
+
+namespace unimap::cli {
+
+// The map error of one map file against one world.
+struct MapEvaluation {
+  std::filesystem::path map_file;    // the map evaluated (.pcd or .ply)
+  std::filesystem::path world_file;  // the true world (a world.yaml primitives list)
+  eval::MapErrorStats unaligned;     // points as stored: the map frame taken as the world frame
+  // Points moved by T_world_map first (e.g. the trajectory's ATE alignment,
+  // eval::TrajectoryErrors::alignment.T_target_source); empty when no
+  // transform was given.
+  std::optional<eval::MapErrorStats> aligned;
+};
+
+// The map's points: .ply through io::ReadPlyVertices, .pcd through
+// io::LoadPcdXyzi (extension case-insensitive). Throws InputError naming the
+// file when it is missing, has another extension, or cannot be read.
+std::vector<Eigen::Vector3f> LoadMapPoints(const std::filesystem::path& map_file);
+
+// The world of a world.yaml (the primitives list `unimap simulate` writes
+// into each dataset), built. Throws InputError when the file is missing and
+// ConfigError (file, line, key, reason) when it is not a valid world.
+sim::World LoadWorldFile(const std::filesystem::path& world_file);
+
+// Which world file to use: world_option when not empty (InputError when it
+// does not exist), else "world.yaml" beside truth_file when that exists,
+// else none.
+std::optional<std::filesystem::path> ResolveWorldFile(const std::string& world_option,
+                                                      const std::filesystem::path& truth_file);
+
+// Loads both files and computes the distance of every map point to the
+// world's surfaces (sim::World::SurfaceDistance): unaligned always, aligned
+// when T_world_map is given. Throws InputError (naming the map file) for a
+// map that cannot be read, is empty or holds a non-finite point, for an
+// empty world, and ConfigError for an invalid world file.
+MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::filesystem::path& world_file,
+                              const std::optional<Eigen::Isometry3d>& T_world_map = std::nullopt);
+
+// The metrics.json keys MapEvaluation adds, in order: map_error_mean_m,
+// map_error_p95_m, map_error_max_m, map_points, map_error_aligned_mean_m,
+// map_error_aligned_p95_m, map_error_aligned_max_m.
+std::vector<std::string> MapEvaluationJsonKeys();
+
+// Display rows for the same keys (4 decimals; "n/a" for an absent aligned
+// variant), for the console table.
+std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation);
+
+// Adds the map metrics to the files eval::WriteEvaluationReport wrote in
+// out_dir: the keys above to metrics.json (full precision; the aligned ones
+// null when absent) and the rows plus the map and world file names to
+// report.html. Both files are rewritten atomically. Throws unimap::Error
+// when they are missing, were not written by WriteEvaluationReport, or
+// cannot be written.
+void AddMapEvaluationToReport(const MapEvaluation& evaluation, const std::filesystem::path& out_dir);
+
+}  // namespace unimap::cli

@@ -1,0 +1,66 @@
+#include "MappingRun.hpp"
+
+#include <filesystem>
+#include <iostream>
+
+#include "MapOutputs.hpp"
+#include "RunOutputs.hpp"
+#include "io/DatasetReader.hpp"
+#include "io/TumTrajectory.hpp"
+#include "pipeline/Mapper.hpp"
+#include "unimap/CoreParameters.hpp"
+#include "unimap/Errors.hpp"
+#include "unimap/Platform.hpp"
+
+namespace unimap::cli {
+namespace {
+
+constexpr const char* kOdometryFile = "trajectory_odometry.tum";
+
+}  // namespace
+
+int RunMappingToFolder(const MappingRunOptions& options) {
+  try {
+    const Platform platform = LoadPlatform(options.platform_file);
+    pipeline::MapperOptions mapper_options =
+        pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+    mapper_options.localizer.gpf.threads = options.threads;
+    mapper_options.loop_search.enabled = !options.no_loop_closure;
+    io::DatasetReader reader(options.data_dir);
+    if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
+      std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
+                << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
+    }
+    const std::filesystem::path out(options.out_dir);
+    pipeline::Mapper mapper(mapper_options, platform.plugin.plugin);
+    // The filter's own estimate streams to trajectory_odometry.tum; the
+    // optimised trajectory and the map are written when the run ends.
+    const pipeline::RunSummary summary =
+        RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet);
+    MapOutputOptions map_options;
+    map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
+    const JsonObject mapping = WriteMapOutputs(out, mapper, map_options);
+
+    RunOutputsInput outputs =
+        MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
+                            options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
+    outputs.odometry_file = kOdometryFile;
+    outputs.map_file = "map.pcd";
+    outputs.extras.emplace_back("mapping", mapping);
+    const pipeline::MapperStats stats = mapper.stats();
+    if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {
+      const std::filesystem::path truth = std::filesystem::path(options.data_dir) / "groundtruth.tum";
+      outputs.extras.emplace_back(
+          "loop_point", LoopPointErrors(io::ReadTumTrajectory(out / kOdometryFile), mapper.OptimizedTrajectory(),
+                                        io::ReadTumTrajectory(truth), stats.first_loop_closure_time_s));
+    }
+    std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, "
+              << stats.loop_closures << " loop closures, " << stats.optimisations << " optimisations\n";
+    return WriteRunOutputs(outputs);
+  } catch (const Error& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace unimap::cli

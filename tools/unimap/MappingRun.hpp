@@ -1,0 +1,24 @@
+#pragma once
+// The mapping job shared by `unimap run` and `unimap demo`: map a dataset
+// with a platform and write every output into a folder.
+#include <string>
+
+namespace unimap::cli {
+
+struct MappingRunOptions {
+  std::string platform_file;    // platform YAML
+  std::string data_dir;         // dataset folder
+  std::string out_dir;          // output folder
+  double max_duration_s = 0.0;  // 0: the whole dataset
+  int threads = 1;              // GPF threads
+  bool quiet = false;           // no progress line
+  bool no_loop_closure = false;  // map without loop-closure search
+};
+
+// Runs the Mapper over the dataset and writes trajectory_odometry.tum
+// (streamed), trajectory.tum and trajectory_kitti.txt (optimised), map.pcd,
+// map.ply, map.bt, run.json and, with ground truth, metrics.json and the
+// report. Returns the exit code (0, or 2 after a printed error).
+int RunMappingToFolder(const MappingRunOptions& options);
+
+}  // namespace unimap::cli
