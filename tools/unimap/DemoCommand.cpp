@@ -28,7 +28,7 @@ struct DemoOptions {
   std::string out_dir = "unimap-demo";  // everything goes here (dataset in data/)
   std::string configs;                  // folder with scenarios/ and platforms/ (default: found)
   double duration_s = 0.0;              // simulate only this much (0: the whole 15-minute flight)
-  int threads = 1;                      // GPF threads
+  int threads = 2;                      // GPF threads (the README machine has two cores)
 };
 
 std::string Format(double value, int digits) {

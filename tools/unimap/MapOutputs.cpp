@@ -28,8 +28,9 @@ const StampedPose* Nearest(const std::vector<StampedPose>& poses, double time_s,
   return best;
 }
 
-JsonObject ErrorsAt(const StampedPose& estimate, const StampedPose& truth) {
-  const Eigen::Vector3d d = estimate.T_map_body.translation() - truth.T_map_body.translation();
+// Errors of estimate (moved into the truth's frame by T_truth_estimate) against truth.
+JsonObject ErrorsAt(const Eigen::Isometry3d& T_truth_estimate, const StampedPose& estimate, const StampedPose& truth) {
+  const Eigen::Vector3d d = (T_truth_estimate * estimate.T_map_body).translation() - truth.T_map_body.translation();
   JsonObject o;
   o.Add("height_error_m", std::abs(d.z()));
   o.Add("position_error_m", d.norm());
@@ -77,10 +78,15 @@ JsonObject LoopPointErrors(const std::vector<StampedPose>& odometry, const std::
   const StampedPose* after = Nearest(optimized, time_s, kMaxDt);
   const StampedPose* true_pose = Nearest(truth, time_s, kMaxDt);
   JsonObject o;
-  if (before == nullptr || after == nullptr || true_pose == nullptr) return o;
+  if (before == nullptr || after == nullptr || true_pose == nullptr || odometry.empty()) return o;
+  const StampedPose* true_start = Nearest(truth, odometry.front().time_s, kMaxDt);
+  if (true_start == nullptr) return o;
+  // Start-anchored (as drift_percent): both trajectories begin in the local
+  // frame of the first pose, which the first (fixed) graph node keeps.
+  const Eigen::Isometry3d T_truth_estimate = true_start->T_map_body * odometry.front().T_map_body.inverse();
   o.Add("time_s", time_s);
-  o.Add("odometry", ErrorsAt(*before, *true_pose));
-  o.Add("optimized", ErrorsAt(*after, *true_pose));
+  o.Add("odometry", ErrorsAt(T_truth_estimate, *before, *true_pose));
+  o.Add("optimized", ErrorsAt(T_truth_estimate, *after, *true_pose));
   return o;
 }
 

@@ -45,7 +45,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
     outputs.odometry_file = kOdometryFile;
-    outputs.map_file = "map.pcd";
+    outputs.map_file = "map.ply";  // (read without PCL)
     outputs.extras.emplace_back("mapping", mapping);
     const pipeline::MapperStats stats = mapper.stats();
     if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {

@@ -1,16 +1,7 @@
 #!/usr/bin/env bash
 # One `unimap localize` check per call: localize_test.sh CASE UNIMAP_EXE SOURCE_DIR WORK_DIR.
 set -uo pipefail
-case_name=$1 exe=$2 src=$3 work=$4/$1
-rm -rf "$work"; mkdir -p "$work"
-log="$work/out.txt"
-fail() { echo "FAIL [$case_name]: $*"; echo "--- output:"; cat "$log"; exit 1; }
-run() { "$exe" "$@" >>"$log" 2>&1; echo $?; }
-expect() { grep -Eq -- "$1" "$log" || fail "expected /$1/"; }
-json_number() {  # json_number FILE KEY: the number after "KEY": (top level or nested)
-  sed -n "s/^ *\"$2\": \([-0-9.eE+]*\),\{0,1\}$/\1/p" "$1" | head -1; }
-below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a + 0 < b + 0) }'; }
-hokuyo="$src/configs/platforms/rotating_hokuyo.yaml"
+source "$(dirname "$0")/../script_helpers.sh" "$@"
 
 case $case_name in
   tunnel_hokuyo_20s)

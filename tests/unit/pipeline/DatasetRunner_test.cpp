@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "PipelineTestData.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
 #include "io/DatasetReader.hpp"
@@ -24,40 +25,9 @@ namespace unimap::pipeline {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Per-process scratch folders: ctest runs the cases in parallel processes.
-// Removed when the test process exits.
-fs::path Scratch(const std::string& name) {
-  struct Cleanup {
-    std::vector<fs::path> dirs;
-    ~Cleanup() {
-      std::error_code ignored;
-      for (const auto& d : dirs) fs::remove_all(d, ignored);
-    }
-  };
-  static Cleanup cleanup;
-  const fs::path dir =
-      fs::temp_directory_path() / ("unimap_runner_test_" + std::to_string(::getpid()) + "_" + name);
-  cleanup.dirs.push_back(dir);
-  return dir;
-}
-
-const fs::path kPlatform = fs::path(UNIMAP_SOURCE_DIR) / "configs/platforms/rotating_hokuyo.yaml";
-
-// 6 s of the tunnel scenario with the rotating Hokuyo, made once.
-const fs::path& CleanDataset() {
-  static const fs::path dir = [] {
-    const fs::path out = Scratch("clean");
-    fs::remove_all(out);
-    sim::SimulationOptions options;
-    options.out_dir = out;
-    options.duration_s = 6.0;
-    options.payload = kPlatform.string();
-    sim::Simulator(sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml"), options).Run();
-    return out;
-  }();
-  return dir;
-}
+using test::CleanDataset;
+using test::kPlatform;
+using test::Scratch;
 
 // Copies the clean dataset, letting `edit` change each event (return false to drop it).
 fs::path RewriteDataset(const std::string& name, const std::function<bool(io::DatasetEvent*)>& edit) {
