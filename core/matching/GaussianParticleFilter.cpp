@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "estimation/So3.hpp"
+#include "matching/PoseRefiner.hpp"
 #include "matching/ScanLikelihood.hpp"
 #include "matching/VoxelDownsampler.hpp"
 
@@ -143,7 +144,28 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
   result.sample_covariance = S_s;
   result.posterior_mean = mu_p;
   result.posterior_covariance = S_p;
-  result.measurement = RecoverPseudoMeasurement(mu_s, S_s, mu_p, S_p, options_.min_information_ratio);
+  if (options_.refine_iterations > 0) {
+    // Refine on the analytic prior N(0, S) (not its sample estimate), from the GPF mean.
+    Matrix6d prior = Matrix6d::Identity();
+    for (int r = 0; r < d; ++r) {
+      for (int c = 0; c < d; ++c) prior(dims[r], dims[c]) = S(r, c);
+    }
+    const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points,
+                              options_.refine_iterations);
+    const PoseRefinement refined =
+        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, field);
+    if (refined.ok) {
+      result.refined = true;
+      result.refine_iterations = refined.iterations;
+      result.posterior_mean = refined.mean;
+      result.posterior_covariance = refined.covariance;
+      result.measurement = RecoverPseudoMeasurement(Vector6d::Zero(), prior, refined.mean, refined.covariance,
+                                                    options_.min_information_ratio);
+    }
+  }
+  if (!result.refined) {
+    result.measurement = RecoverPseudoMeasurement(mu_s, S_s, mu_p, S_p, options_.min_information_ratio);
+  }
   if (!result.measurement.ok) {
     result.reason = "sample or posterior covariance is not positive definite";
     return result;

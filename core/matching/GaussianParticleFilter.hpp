@@ -23,13 +23,17 @@ struct GpfResult {
   PseudoMeasurement measurement;          // (z, R) for Eskf::UpdatePoseError
   double effective_sample_size = 0.0;     // 1 / sum w^2
   int points_used = 0;                    // after downsampling
+  int refine_iterations = 0;              // accepted Gauss-Newton steps (GpfOptions::refine_iterations)
+  bool refined = false;                   // posterior_* are the refined Laplace posterior
 };
 
 // Gaussian particle filter scan matcher (Bry et al. 2012): samples pose
 // errors [dp, dtheta] (p + dp, q * Exp(dtheta)) from the predicted
 // covariance, weights each by the scan likelihood in the distance map, and
 // returns the weighted mean and covariance with the pseudo measurement that
-// reproduces them in the ESKF.
+// reproduces them in the ESKF. With refine_iterations > 0 the mean is then
+// refined by Gauss-Newton on the same posterior (PoseRefiner) and the
+// Laplace approximation there replaces the particle statistics.
 class GaussianParticleFilter {
  public:
   explicit GaussianParticleFilter(GpfOptions options);

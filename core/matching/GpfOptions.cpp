@@ -14,8 +14,8 @@ bool GpfOptions::IsValid(std::string* why) const {
     *why = "point_sigma_m, clamp_distance_m and effective_points must be positive, voxel_size_m >= 0";
     return false;
   }
-  if (max_points < 0 || threads < 1) {
-    *why = "max_points must be >= 0 and threads >= 1";
+  if (max_points < 0 || threads < 1 || refine_iterations < 0) {
+    *why = "max_points and refine_iterations must be >= 0 and threads >= 1";
     return false;
   }
   if (!(min_sigma_position_m >= 0.0) || !(min_sigma_rotation_rad >= 0.0) ||

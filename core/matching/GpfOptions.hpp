@@ -16,6 +16,9 @@ struct GpfOptions {
   double min_sigma_position_m = 0.005;   // sampling covariance floor, position
   double min_sigma_rotation_rad = 0.001;  // sampling covariance floor, rotation
   double min_information_ratio = 1e-6;   // pseudo-measurement repair: information eigenvalue floor
+  int refine_iterations = 0;             // Gauss-Newton steps from the GPF mean on the same posterior
+                                         // (PoseRefiner; 0: plain GPF); the refined Laplace posterior
+                                         // then replaces the particles' weighted mean and covariance
   int threads = 1;                       // particles weighted in parallel (TBB)
   std::uint64_t seed = 1;                // sampling seed (deterministic per scan sequence)
 

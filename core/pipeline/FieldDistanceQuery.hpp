@@ -21,6 +21,12 @@ class FieldDistanceQuery final : public matching::DistanceQuery {
       for (int i = 0; i < n; ++i) out[i] = field.Distance(points_map[i]);
     }
   }
+  // Trilinear distances with their analytic gradients (whatever trilinear_ says).
+  void DistancesAndGradients(const Eigen::Vector3f* points_map, int n, float* out,
+                             Eigen::Vector3f* gradients_map) const override {
+    const map::DistanceField& field = *field_;
+    for (int i = 0; i < n; ++i) out[i] = field.DistanceTrilinear(points_map[i], &gradients_map[i]);
+  }
 
  private:
   std::shared_ptr<const map::DistanceField> field_;

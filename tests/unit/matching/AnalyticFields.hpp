@@ -19,6 +19,17 @@ class BoxRoomField final : public DistanceQuery {
       out[i] = std::abs(gap.minCoeff());
     }
   }
+  // Exact gradients: d = |h_k - |p_k|| for the nearest wall k.
+  void DistancesAndGradients(const Eigen::Vector3f* p, int n, float* out, Eigen::Vector3f* gradients) const override {
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector3f gap = h_ - p[i].cwiseAbs();
+      int k = 0;
+      gap.minCoeff(&k);
+      out[i] = std::abs(gap(k));
+      gradients[i].setZero();
+      gradients[i](k) = -(gap(k) >= 0.0f ? 1.0f : -1.0f) * (p[i](k) >= 0.0f ? 1.0f : -1.0f);
+    }
+  }
   // Points on the walls (ceiling and floor included), fixed seed.
   std::vector<Eigen::Vector3f> SampleWalls(int n, unsigned seed) const {
     std::mt19937 rng(seed);
@@ -36,6 +47,34 @@ class BoxRoomField final : public DistanceQuery {
 
  private:
   Eigen::Vector3f h_;
+};
+
+// A single horizontal plane z = 0: distance |z|, no gradient in x or y.
+class FloorField final : public DistanceQuery {
+ public:
+  void Distances(const Eigen::Vector3f* p, int n, float* out) const override {
+    for (int i = 0; i < n; ++i) out[i] = std::abs(p[i].z());
+  }
+  // Exact gradients: (0, 0, sign z), +z on the plane itself.
+  void DistancesAndGradients(const Eigen::Vector3f* p, int n, float* out, Eigen::Vector3f* gradients) const override {
+    for (int i = 0; i < n; ++i) {
+      out[i] = std::abs(p[i].z());
+      gradients[i] = Eigen::Vector3f(0.0f, 0.0f, p[i].z() >= 0.0f ? 1.0f : -1.0f);
+    }
+  }
+};
+
+// Distance to a sphere of radius r at the origin, without analytic
+// gradients (DistanceQuery's finite-difference default).
+class SphereField final : public DistanceQuery {
+ public:
+  explicit SphereField(float r) : r_(r) {}
+  void Distances(const Eigen::Vector3f* p, int n, float* out) const override {
+    for (int i = 0; i < n; ++i) out[i] = std::abs(p[i].norm() - r_);
+  }
+
+ private:
+  float r_;
 };
 
 }  // namespace unimap::matching::testing
