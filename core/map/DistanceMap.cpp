@@ -42,6 +42,7 @@ DistanceMap::DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapO
       planner_(options_, options_.resolution_m),
       snapshot_(std::make_shared<const DistanceField>(
           static_cast<float>(options_.clamp_distance_m))) {
+  distances_on_ = options_.compute_distances;
   worker_ = std::thread([this] { WorkerLoop(); });
 }
 
@@ -120,6 +121,12 @@ void DistanceMap::UpdateSensorPosition(const Eigen::Vector3f& sensor_map) {
   CheckPosition(sensor_map, "sensor position");
   Job job;
   job.sensor_map = sensor_map;
+  Enqueue(std::move(job));
+}
+
+void DistanceMap::EnableDistances() {
+  Job job;
+  job.enable_distances = true;
   Enqueue(std::move(job));
 }
 
@@ -228,6 +235,11 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   bool recentre = false;
   DistanceMapStats counts;
   for (Job& job : jobs) {
+    if (job.enable_distances) {
+      recentre = recentre || (!distances_on_ && has_centre_);
+      distances_on_ = true;
+      continue;
+    }
     if (!job.points_map.empty()) {
       endpoints.Extend(tree_->Insert(job.points_map, job.sensor_map));
       ++counts.scans_inserted;
@@ -245,7 +257,9 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   const Clock::time_point inserted = Clock::now();
 
   bool rebuilt = false;
-  if (recentre) {
+  if (!distances_on_) {
+    // A growing submap: the octree only (the changes are not consumed).
+  } else if (recentre) {
     sensor_box_ = planner_.SensorBox(centre_key_);
     occupied_ = tree_->OccupiedExtent(sensor_box_);
     rebuilt = RebuildRegion();

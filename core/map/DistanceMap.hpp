@@ -70,6 +70,10 @@ class DistanceMap : public ScanMap {
   // Tells the box-follows-sensor policy where the sensor is (for localisation
   // in a prior map, where nothing is inserted). Same errors as InsertScan.
   void UpdateSensorPosition(const Eigen::Vector3f& sensor_map) override;
+  // Starts the distance transform of a map made with compute_distances =
+  // false: the next update builds it over the box around the last sensor
+  // position (WaitForUpdates() waits for it). No effect when already on.
+  void EnableDistances();
   // Moves the box centre to centre_map regardless of the policy.
   void SetCenter(const Eigen::Vector3f& centre_map);
 
@@ -98,6 +102,7 @@ class DistanceMap : public ScanMap {
     std::vector<Eigen::Vector3f> points_map;  // scan to insert (empty: position only)
     Eigen::Vector3f sensor_map = Eigen::Vector3f::Zero();  // sensor position / forced centre
     bool force_centre = false;                // sensor_map is a forced box centre
+    bool enable_distances = false;            // turns the distance transform on (no position)
   };
 
   DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapOptions& options);
@@ -119,6 +124,7 @@ class DistanceMap : public ScanMap {
   FieldBoxPlanner planner_;
   std::unique_ptr<EdtRegion> region_;
   bool has_centre_ = false;
+  bool distances_on_ = true;  // options_.compute_distances until EnableDistances()
   Eigen::Vector3i centre_key_ = Eigen::Vector3i::Zero();
   KeyBox sensor_box_;
   KeyBox occupied_;  // occupied voxels of sensor_box_ (grown conservatively)

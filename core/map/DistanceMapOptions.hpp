@@ -29,6 +29,8 @@ struct DistanceMapOptions {
   double occupancy_threshold = 0.5;  // voxels above this probability are obstacles
   double clamp_min_probability = 0.12;  // lower clamp of a voxel's occupancy probability
   double clamp_max_probability = 0.97;  // upper clamp of a voxel's occupancy probability
+  bool compute_distances = true;  // false: only the octree is kept up to date (no distance transform,
+                                  // empty fields) until DistanceMap::EnableDistances() (a growing submap)
   bool subvoxel_surfaces = true;  // distances are to the surface inside each occupied voxel
                                   // (mean and plane of its returns, see SurfacePoints), signed
                                   // behind it, instead of to the voxel centre (up to half a

@@ -49,9 +49,15 @@ void SubmapManager::InsertScan(std::vector<Eigen::Vector3f> points_local,
   if (live_.front()->scans_3d() >= options_.scans_3d_per_submap) {
     retired_.push_back(live_.front()->Retire());
     live_.pop_front();
+    // The growing submap becomes the matching one: its distance transform
+    // starts now (built over its box in one go).
+    if (!live_.empty()) live_.front()->distance_map().EnableDistances();
   }
   if (live_.empty() || live_.back()->scans_3d() >= half) {
-    live_.push_back(std::make_unique<Submap>(next_id_++, sensor_origin_local.cast<double>(), options_.map));
+    // A growing submap keeps only its octree until it becomes the matching one.
+    DistanceMapOptions growing = options_.map;
+    growing.compute_distances = live_.empty() && options_.map.compute_distances;
+    live_.push_back(std::make_unique<Submap>(next_id_++, sensor_origin_local.cast<double>(), growing));
     insertion.created_ids.push_back(live_.back()->id());
     insertion.created_T_local_submaps.push_back(live_.back()->T_local_submap());
   }

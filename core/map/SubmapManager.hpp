@@ -25,7 +25,9 @@ struct SubmapInsertion {
 // received M / 2 scans a new growing submap starts; when the matching one has
 // received M it is retired (its live distance map dropped, its surface kept)
 // and the growing one becomes the matching one. A new submap's frame is at
-// the sensor position of the scan that starts it. Thread-safe.
+// the sensor position of the scan that starts it. Only the matching submap
+// keeps a distance transform: a growing one updates its octree alone and
+// builds its distances when it becomes the matching one. Thread-safe.
 class SubmapManager : public ScanMap {
  public:
   // Throws ConfigError when the options are invalid.

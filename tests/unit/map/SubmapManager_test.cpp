@@ -91,3 +91,40 @@ TEST(SubmapManagerTest, BadInputIsRejected) {
 
 }  // namespace
 }  // namespace unimap::map
+
+namespace unimap::map {
+namespace {
+
+TEST(SubmapManagerTest, GrowingSubmapBuildsItsDistancesWhenItBecomesTheMatchingOne) {
+  SubmapManager manager(TestOptions(2));  // M = 2: a new growing submap after every scan
+  manager.InsertScan(Wall(), V3::Zero());  // submap 0 (matching), then submap 1 starts growing
+  manager.InsertScan(Wall(), V3::Zero());  // into 0 and 1; 0 retires, 1 becomes the matching one
+  manager.WaitForUpdates();
+  ASSERT_EQ(manager.TakeRetired().size(), 1u);
+  const std::shared_ptr<const DistanceField> field = manager.Snapshot();
+  ASSERT_GT(field->CellCount(), 0u);  // built at the switch from submap 1's octree
+  EXPECT_NEAR(field->Distance(V3(2.1f, 0.1f, 0.1f)), 0.0f, 1e-3f);
+  EXPECT_NEAR(field->Distance(V3(1.5f, 0.1f, 0.1f)), 0.6f, 0.01f);
+}
+
+TEST(DistanceMapDeferredTest, DistancesStartOnlyWhenEnabled) {
+  DistanceMapOptions options = TestOptions(2).map;
+  options.compute_distances = false;
+  DistanceMap map(options);
+  map.InsertScan(Wall(), V3::Zero());
+  map.WaitForUpdates();
+  EXPECT_EQ(map.Snapshot()->CellCount(), 0u);       // the octree only
+  EXPECT_FALSE(map.OccupiedVoxelCentres().empty());
+  map.EnableDistances();
+  map.WaitForUpdates();
+  const std::shared_ptr<const DistanceField> field = map.Snapshot();
+  ASSERT_GT(field->CellCount(), 0u);
+  EXPECT_NEAR(field->Distance(V3(1.5f, 0.1f, 0.1f)), 0.6f, 0.01f);
+  // Later scans update the distances incrementally as usual.
+  map.InsertScan(test::SampleRectangle(V3(-1.3f, -1.1f, -1.1f), V3(0, 2.2f, 0), V3(0, 0, 2.2f), 0.1f), V3::Zero());
+  map.WaitForUpdates();
+  EXPECT_NEAR(map.Snapshot()->Distance(V3(-0.7f, 0.1f, 0.1f)), 0.6f, 0.01f);
+}
+
+}  // namespace
+}  // namespace unimap::map
