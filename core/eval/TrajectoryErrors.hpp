@@ -10,9 +10,20 @@
 
 namespace unimap::eval {
 
+// How the estimate is placed in the truth frame for the start-anchored errors.
+enum class Anchor {
+  kYawPosition,  // T_anch(k) = T_0 T_est(k) with T_0 a rotation about z and a translation taking
+                 // the estimate's first position and heading onto the truth's: for estimates
+                 // whose world frame is gravity-aligned (z up), like every unimap trajectory;
+                 // the initial tilt estimate stays part of the error, as in the paper's plots
+  kFullPose,     // T_anch(k) = T_true(0) T_est(0)^-1 T_est(k): the first poses coincide exactly
+                 // (for estimates in an arbitrary frame); an initial tilt error then tilts the
+                 // whole trajectory
+};
+
 // Errors at one associated time. "Anchored" is the estimate expressed in the
-// truth frame so that it starts from the truth's first associated pose:
-// T_anch(k) = T_true(0) T_est(0)^-1 T_est(k) (no alignment).
+// truth frame so that it starts from the truth's first associated pose (see
+// Anchor; no fitting).
 struct PoseError {
   double time_s = 0.0;      // estimate time stamp
   double distance_m = 0.0;  // truth distance travelled since the first pair (along the pairs)
@@ -30,7 +41,8 @@ struct TrajectoryErrors {
 };
 
 // Computes every PoseError; requires at least one pair (throws InputError otherwise).
-TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association);
+TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association,
+                                         Anchor anchor = Anchor::kYawPosition);
 
 // log: unit quaternion -> rotation vector (angle * axis, angle in [0, pi]);
 // q and -q give the same result.

@@ -37,7 +37,7 @@ TrajectoryEvaluation EvaluateTrajectory(const std::vector<StampedPose>& estimate
         << " s away";
     throw InputError(out.str());
   }
-  result.errors = ComputeTrajectoryErrors(result.association);
+  result.errors = ComputeTrajectoryErrors(result.association, options.anchor);
   result.metrics = ComputeTrajectoryMetrics(result.association, result.errors,
                                             options.association.max_time_diff_s, options.segment_m);
   return result;

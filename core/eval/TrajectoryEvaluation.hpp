@@ -13,6 +13,7 @@ namespace unimap::eval {
 struct EvaluationOptions {
   AssociationOptions association;  // time matching tolerance
   double segment_m = 10.0;         // RPE segment length (travelled distance), > 0
+  Anchor anchor = Anchor::kYawPosition;  // how start-anchored errors place the estimate (TrajectoryErrors.hpp)
 };
 
 // Everything an evaluation produces.

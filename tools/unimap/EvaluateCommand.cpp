@@ -29,6 +29,7 @@ struct EvaluateOptions {
   std::string world_file;        // true world (world.yaml); empty = world.yaml beside the truth, if any
   double max_time_diff_s = 0.1;  // association tolerance
   double segment_m = 10.0;       // RPE segment length
+  std::string anchor = "yaw";    // start anchoring: "yaw" (position + heading) or "full" (whole first pose)
 };
 
 // Reads one TUM file; a missing file is an InputError naming it.
@@ -55,6 +56,7 @@ int RunEvaluate(const EvaluateOptions& options) {
     eval::EvaluationOptions eval_options;
     eval_options.association.max_time_diff_s = options.max_time_diff_s;
     eval_options.segment_m = options.segment_m;
+    eval_options.anchor = options.anchor == "full" ? eval::Anchor::kFullPose : eval::Anchor::kYawPosition;
     eval::TrajectoryEvaluation evaluation;
     try {
       evaluation = eval::EvaluateTrajectory(estimate, truth, eval_options);
@@ -126,6 +128,10 @@ void AddEvaluateCommand(CLI::App* app) {
   cmd->add_option("--max-time-diff-s", options->max_time_diff_s,
                   "Largest time from an estimate pose to each bracketing truth sample")
       ->capture_default_str();
+  cmd->add_option("--anchor", options->anchor,
+                  "Start anchoring: yaw = first position and heading (gravity-aligned estimates, default), "
+                  "full = the whole first pose (estimates in an arbitrary frame)")
+      ->check(CLI::IsMember({"yaw", "full"}));
   cmd->add_option("--segment-m", options->segment_m, "Travelled distance per RPE segment")
       ->capture_default_str();
   cmd->callback([options]() {

@@ -57,14 +57,45 @@ TEST(TrajectoryEvaluationTest, ConstantOffsetIsInvisibleAfterAlignmentAndAnchori
   ExpectAllErrorsZero(ev.metrics);
 }
 
-TEST(TrajectoryEvaluationTest, RigidlyTransformedEstimateHasZeroErrors) {
+TEST(TrajectoryEvaluationTest, RigidlyTransformedEstimateHasZeroErrorsWithFullPoseAnchoring) {
   Eigen::Isometry3d T_est_true = Eigen::Isometry3d::Identity();
   T_est_true.linear() = Eigen::AngleAxisd(0.8, Eigen::Vector3d(1, 2, -1).normalized()).toRotationMatrix();
   T_est_true.translation() = Eigen::Vector3d(-7.0, 2.0, 0.5);
-  const TrajectoryEvaluation ev = EvaluateTrajectory(Transformed(Helix(), T_est_true), Helix());
+  EvaluationOptions options;
+  options.anchor = Anchor::kFullPose;  // an arbitrary (tilted) estimate frame
+  const TrajectoryEvaluation ev = EvaluateTrajectory(Transformed(Helix(), T_est_true), Helix(), options);
   ExpectAllErrorsZero(ev.metrics);
   // The alignment found is the inverse transform.
   EXPECT_TRUE(ev.errors.alignment.T_target_source.isApprox(T_est_true.inverse(), 1e-9));
+}
+
+TEST(TrajectoryEvaluationTest, GravityAlignedFramesDifferingInYawAndPositionGiveZeroErrors) {
+  Eigen::Isometry3d T_est_true = Eigen::Isometry3d::Identity();
+  T_est_true.linear() = Eigen::AngleAxisd(-2.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T_est_true.translation() = Eigen::Vector3d(4.0, -3.0, 1.5);
+  const TrajectoryEvaluation ev = EvaluateTrajectory(Transformed(Helix(), T_est_true), Helix());
+  ExpectAllErrorsZero(ev.metrics);
+}
+
+TEST(TrajectoryEvaluationTest, ATiltedEstimateFrameIsAnErrorUnlessAnchoredOnTheFullPose) {
+  // A gravity-aligned estimator that misjudged the initial tilt by 0.3 deg
+  // (e.g. an accelerometer bias taken for gravity) estimates every attitude
+  // 0.3 deg off about the world y axis. Anchoring position and heading keeps
+  // that error (the paper's rotation error); anchoring the full first pose
+  // would tilt the whole estimate to hide it.
+  const double tilt_rad = 0.3 * M_PI / 180.0;
+  const Eigen::Isometry3d T_tilt(Eigen::AngleAxisd(tilt_rad, Eigen::Vector3d::UnitY()));
+  const std::vector<StampedPose> truth = StraightLine(100);
+  std::vector<StampedPose> estimate = truth;
+  for (StampedPose& p : estimate) p.T_map_body.linear() = T_tilt.linear() * p.T_map_body.linear();
+  const TrajectoryMetrics kept = EvaluateTrajectory(estimate, truth).metrics;
+  EXPECT_NEAR(kept.mean_abs_rot_error_deg.y(), 0.3, 1e-9);  // pitch: the straight line heads along x
+  EXPECT_NEAR(kept.max_abs_error_m.norm(), 0.0, 1e-9);      // positions are right
+  EvaluationOptions full;
+  full.anchor = Anchor::kFullPose;
+  const TrajectoryMetrics hidden = EvaluateTrajectory(estimate, truth, full).metrics;
+  EXPECT_NEAR(hidden.mean_abs_rot_error_deg.norm(), 0.0, 1e-9);
+  EXPECT_NEAR(hidden.max_abs_error_m.z(), 100.0 * std::sin(tilt_rad), 1e-6);  // the tilt bends the line instead
 }
 
 TEST(TrajectoryEvaluationTest, LinearDriftGivesExactDriftMaxErrorAndAte) {
