@@ -3,6 +3,8 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <fstream>
+#include <string>
 #include <variant>
 
 #include "unimap/Errors.hpp"
@@ -27,9 +29,20 @@ void WritePoses(EventSink& localizer, io::TumTrajectoryWriter& trajectory, RunSu
 }  // namespace
 
 double PeakRssMb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // "VmHWM:  123456 kB"
+  }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+bool ResetPeakRss() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";  // resets the peak resident set size (VmHWM)
+  clear.flush();
+  return static_cast<bool>(clear);
 }
 
 RunSummary RunDataset(io::DatasetReader& reader, EventSink& localizer, io::TumTrajectoryWriter& trajectory,

@@ -42,7 +42,12 @@ struct RunSummary {
 RunSummary RunDataset(io::DatasetReader& reader, EventSink& sink, io::TumTrajectoryWriter& trajectory,
                       const RunOptions& options);
 
-// Peak resident set size of this process (MiB).
+// Peak resident set size of this process (MiB) since it started or since
+// the last ResetPeakRss() (Linux VmHWM; getrusage's lifetime peak where
+// /proc is unavailable).
 double PeakRssMb();
+// Restarts the peak measurement at the current resident size (Linux
+// /proc/self/clear_refs); returns false when the system does not allow it.
+bool ResetPeakRss();
 
 }  // namespace unimap::pipeline
