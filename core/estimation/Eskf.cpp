@@ -151,6 +151,26 @@ PoseUpdateResult Eskf::UpdatePose(const Eigen::Isometry3d& T_world_body_measured
   return UpdatePoseError(z, R);
 }
 
+void Eskf::PredictPose(double time_s, const Eigen::Isometry3d& T_prev_next, const Matrix6d& covariance) {
+  const Eigen::Matrix3d R = state_.q_world_body.toRotationMatrix();
+  const Eigen::Matrix3d dR = T_prev_next.linear();
+  const Eigen::Vector3d dp = T_prev_next.translation();
+  ErrorCovariance F = ErrorCovariance::Identity();
+  F.block<3, 3>(kP, kTheta) = -R * Skew(dp);
+  F.block<3, 3>(kTheta, kTheta) = dR.transpose();
+  P_ = F * P_ * F.transpose();
+  P_.block<3, 3>(kP, kP) += R * covariance.topLeftCorner<3, 3>() * R.transpose();
+  P_.block<3, 3>(kP, kTheta) += R * covariance.topRightCorner<3, 3>();
+  P_.block<3, 3>(kTheta, kP) += covariance.bottomLeftCorner<3, 3>() * R.transpose();
+  P_.block<3, 3>(kTheta, kTheta) += covariance.bottomRightCorner<3, 3>();
+  P_ = 0.5 * (P_ + P_.transpose());
+  const double dt = time_s - state_.time_s;
+  state_.p_world_body_m += R * dp;
+  state_.v_world_m_s = dt > 0.0 ? Eigen::Vector3d(R * dp / dt) : Eigen::Vector3d::Zero();
+  state_.q_world_body = (state_.q_world_body * Eigen::Quaterniond(dR)).normalized();
+  state_.time_s = time_s;
+}
+
 Matrix6d Eskf::PoseCovariance() const {
   Matrix6d out;
   for (int r = 0; r < 6; ++r) {

@@ -46,6 +46,13 @@ class Eskf {
   // as a gap; the covariance grows over the gap.
   void RestartImu(const ImuSample& sample);
 
+  // Prediction without an IMU (a MotionPrior): moves the nominal pose by the
+  // body-frame increment T_prev_next (p += R dp, q = q dq), sets the time and
+  // the velocity to the increment's mean, and propagates the covariance with
+  // F (dp' = dp - R [dp_inc]x dtheta, dtheta' = dR^T dtheta) plus the
+  // increment's covariance (position block rotated into the world frame).
+  void PredictPose(double time_s, const Eigen::Isometry3d& T_prev_next, const Matrix6d& covariance);
+
   // Pose update in error coordinates relative to the current nominal state:
   // z = [dp, dtheta] measured, R its covariance (linear update, Joseph form).
   PoseUpdateResult UpdatePoseError(const Vector6d& z, const Matrix6d& R);

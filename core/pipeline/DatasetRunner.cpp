@@ -70,6 +70,8 @@ RunSummary RunDataset(io::DatasetReader& reader, EventSink& localizer, io::TumTr
         localizer.AddEncoder(*enc);
       } else if (auto* scan = std::get_if<io::ScanRecord>(&*event)) {
         localizer.AddScan(std::move(*scan));
+      } else if (auto* odometry = std::get_if<OdometrySample>(&*event)) {
+        localizer.AddOdometry(*odometry);
       }
       WritePoses(localizer, trajectory, &summary);
       const auto now = Clock::now();

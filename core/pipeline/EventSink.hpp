@@ -7,6 +7,7 @@
 #include "io/ScanRecord.hpp"
 #include "unimap/ImuSample.hpp"
 #include "unimap/EncoderSample.hpp"
+#include "unimap/OdometrySample.hpp"
 
 namespace unimap::pipeline {
 
@@ -27,6 +28,8 @@ class EventSink {
   virtual void AddImu(const ImuSample& sample) = 0;
   virtual void AddEncoder(const EncoderSample& sample) = 0;
   virtual void AddScan(io::ScanRecord scan) = 0;
+  // A wheel-odometry reading (ignored unless a sink uses it).
+  virtual void AddOdometry(const OdometrySample& /*sample*/) {}
   // Processes everything still waiting (end of data).
   virtual void Finish() = 0;
   // Poses produced since the last call, in time order.

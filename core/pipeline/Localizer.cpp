@@ -1,9 +1,12 @@
 #include "pipeline/Localizer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "estimation/ConstantVelocityPrior.hpp"
 #include "estimation/So3.hpp"
+#include "estimation/WheelOdometryPrior.hpp"
 #include "estimation/StaticInitializer.hpp"
 #include "matching/VoxelDownsampler.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
@@ -21,6 +24,19 @@ Eigen::Isometry3d ApplyCorrection(const Eigen::Isometry3d& T, const matching::Ve
   out.translation() += e.head<3>();
   out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
   return out;
+}
+
+// The motion prior of a source other than the IMU (nullptr for the IMU).
+std::unique_ptr<estimation::MotionPrior> MakePrior(const estimation::MotionPriorOptions& options) {
+  switch (options.source) {
+    case estimation::MotionSource::kWheelOdometry:
+      return std::make_unique<estimation::WheelOdometryPrior>(options);
+    case estimation::MotionSource::kConstantVelocity:
+      return std::make_unique<estimation::ConstantVelocityPrior>(options);
+    case estimation::MotionSource::kImu:
+      break;
+  }
+  return nullptr;
 }
 
 LocalizerOptions Checked(LocalizerOptions options) {
@@ -44,6 +60,7 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
       history_(2.0),
       accumulator_(options_.scans_per_3d_scan) {
   if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
+  prior_ = MakePrior(options_.motion);
 }
 
 Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
@@ -59,6 +76,7 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
       accumulator_(options_.scans_per_3d_scan) {
   if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
   if (!map_) throw std::invalid_argument("Localizer: no map");
+  prior_ = MakePrior(options_.motion);
 }
 
 Localizer::~Localizer() = default;
@@ -70,6 +88,7 @@ void Localizer::Skip(std::size_t* counter, const std::string& message) {
 
 void Localizer::AddImu(const ImuSample& sample) {
   ++stats_.imu_samples;
+  if (prior_) return;  // predictions come from the motion prior
   if (!(sample.time_s > last_imu_time_s_) || !sample.accel_m_s2.allFinite() || !sample.gyro_rad_s.allFinite()) {
     Skip(&stats_.imu_out_of_order, "IMU sample at " + std::to_string(sample.time_s) +
                                        " s is not after the previous one or not finite: skipped");
@@ -110,7 +129,50 @@ void Localizer::AddScan(io::ScanRecord scan) {
   ProcessReadyScans(false);
 }
 
+void Localizer::AddOdometry(const OdometrySample& sample) {
+  ++stats_.odometry_samples;
+  if (!prior_) return;
+  prior_->AddOdometry(sample);
+  last_odometry_time_s_ = std::max(last_odometry_time_s_, sample.time_s);
+  ProcessReadyScans(false);
+}
+
 void Localizer::Finish() { ProcessReadyScans(true); }
+
+void Localizer::InitializeWithoutImu(double time_s) {
+  estimation::NavState state;
+  state.time_s = time_s;
+  if (initial_pose_) {
+    state.p_world_body_m = initial_pose_->translation();
+    state.q_world_body = Eigen::Quaterniond(initial_pose_->linear());
+  }
+  eskf_.Initialize(state);
+  history_.Add(time_s, state.T_world_body());
+}
+
+bool Localizer::PredictTo(double t_end) {
+  if (!prior_) {
+    eskf_.PropagateTo(t_end);
+    return true;
+  }
+  estimation::MotionPrediction prediction = prior_->Predict(eskf_.state().time_s, t_end);
+  if (!prediction.ok) {
+    // No increment (e.g. an odometry gap): hold the pose with the
+    // uncertainty of an unknown motion at the constant-velocity sigmas, so
+    // the match can still find it; counted, not skipped.
+    Skip(&stats_.scans_no_motion, "scan ending at " + std::to_string(t_end) + " s: " + prediction.reason +
+                                      "; pose held with a wide prior");
+    const double dt = t_end - eskf_.state().time_s;
+    const double sigma_p = options_.motion.velocity_sigma_m_s * dt;
+    const double sigma_r = options_.motion.rate_sigma_rad_s * dt;
+    prediction.T_prev_next.setIdentity();
+    prediction.covariance.setZero();
+    prediction.covariance.diagonal() << Eigen::Vector3d::Constant(sigma_p * sigma_p),
+        Eigen::Vector3d::Constant(sigma_r * sigma_r);
+  }
+  eskf_.PredictPose(t_end, prediction.T_prev_next, prediction.covariance);
+  return true;
+}
 
 std::vector<ScanPose> Localizer::TakePoses() {
   std::vector<ScanPose> out;
@@ -146,16 +208,21 @@ void Localizer::ProcessReadyScans(bool finishing) {
   while (!pending_.empty()) {
     const io::ScanRecord& scan = pending_.front();
     const double t_end = io::ScanEndTime(scan);
+    const double newest = std::max({last_imu_time_s_, last_odometry_time_s_,
+                                    encoder_.empty() ? -1e300 : encoder_.end_time_s()});
+    const bool stale = newest - t_end >= options_.max_scan_latency_s;
+    // Without an IMU the filter starts at the first scan its prior covers
+    // (or, with no prior data at all, once the scan is stale).
+    if (!eskf_.initialized() && prior_ && (prior_->ReadyFor(t_end) || finishing || stale)) InitializeWithoutImu(t_end);
     if (!eskf_.initialized()) {
       if (!finishing) return;
       Skip(&stats_.scans_unmatched, "scan at " + std::to_string(t_end) + " s: no IMU to initialise: skipped");
       pending_.pop_front();
       continue;
     }
-    const bool imu_ready = last_imu_time_s_ >= t_end;
+    const bool motion_ready = prior_ ? prior_->ReadyFor(t_end) : last_imu_time_s_ >= t_end;
     const bool encoder_ready = !plugin_->UsesEncoder() || (!encoder_.empty() && encoder_.end_time_s() >= t_end);
-    const double newest = std::max(last_imu_time_s_, encoder_.empty() ? -1e300 : encoder_.end_time_s());
-    if (!finishing && !(imu_ready && encoder_ready) && newest - t_end < options_.max_scan_latency_s) return;
+    if (!finishing && !(motion_ready && encoder_ready) && !stale) return;
     if (plugin_->UsesEncoder() && !encoder_ready && !finishing) {
       Skip(&stats_.scans_no_encoder,
            "scan ending at " + std::to_string(t_end) + " s has no encoder coverage: skipped");
@@ -189,7 +256,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     raw = std::get<RawScan>(scan);
   }
   if (eskf_.state().time_s < t_end) {
-    eskf_.PropagateTo(t_end);
+    if (!PredictTo(t_end)) return;
     history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
   BodyScan body;
@@ -230,6 +297,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
   poses_.push_back({t_end, T_map_body, matched, static_cast<int>(points_body.size())});
+  if (prior_) prior_->Observe(t_end, T_map_body);
 
   const Eigen::Vector3f sensor_map =
       (T_map_body * plugin_->BodyFromLidarAt(encoder_, t_end).translation()).cast<float>();

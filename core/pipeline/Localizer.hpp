@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "estimation/Eskf.hpp"
+#include "estimation/MotionPrior.hpp"
 #include "io/ScanRecord.hpp"
 #include "map/DistanceMap.hpp"
 #include "map/ScanMap.hpp"
@@ -45,6 +46,8 @@ struct LocalizerStats {
   std::size_t scans_bad_input = 0;    // rejected by the payload (NaN points, times, ...): skipped
   std::size_t scans_no_encoder = 0;   // never covered by encoder samples: skipped
   std::size_t scans_out_of_order = 0;  // ending before an already processed scan: skipped
+  std::size_t scans_no_motion = 0;    // no motion prediction (wheel-odometry gap): pose held, wide prior
+  std::size_t odometry_samples = 0;   // wheel-odometry readings received
   std::size_t beams_dropped = 0;      // 2D beams without a valid return
   std::size_t map_insertions = 0;     // 3D scans inserted into the map
   std::size_t map_errors = 0;         // map updates refused (pose outside the map's range): skipped
@@ -73,6 +76,7 @@ class Localizer : public EventSink {
   void AddImu(const ImuSample& sample) override;
   void AddEncoder(const EncoderSample& sample) override;
   void AddScan(io::ScanRecord scan) override;
+  void AddOdometry(const OdometrySample& sample) override;
   // Processes every scan still waiting (end of data).
   void Finish() override;
 
@@ -86,6 +90,11 @@ class Localizer : public EventSink {
 
  private:
   void TryInitialize();
+  // Without an IMU: starts the filter at the first scan (given pose or level origin).
+  void InitializeWithoutImu(double time_s);
+  // Predicts the state to t_end (IMU or motion prior; without an increment
+  // the pose is held with a wide prior and the scan counted in scans_no_motion).
+  bool PredictTo(double t_end);
   void ProcessReadyScans(bool finishing);
   void ProcessScan(const io::ScanRecord& scan);
   void Skip(std::size_t* counter, const std::string& message);
@@ -96,6 +105,7 @@ class Localizer : public EventSink {
   KeyScanSink on_key_scan_;
   std::optional<Eigen::Isometry3d> initial_pose_;
   estimation::Eskf eskf_;
+  std::unique_ptr<estimation::MotionPrior> prior_;  // set when options.motion.source is not kImu
   matching::GaussianParticleFilter gpf_;
   EncoderTrack encoder_;
   PoseHistory history_;
@@ -103,6 +113,7 @@ class Localizer : public EventSink {
   std::vector<ImuSample> init_imu_;
   std::deque<io::ScanRecord> pending_;
   double last_imu_time_s_ = -1e300;
+  double last_odometry_time_s_ = -1e300;
   double last_scan_end_s_ = -1e300;
   std::vector<ScanPose> poses_;
   LocalizerStats stats_;

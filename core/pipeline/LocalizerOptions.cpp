@@ -18,6 +18,7 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     *why = "map: " + inner;
     return false;
   }
+  if (!motion.IsValid(why)) return false;
   if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
       !(max_scan_latency_s > 0.0)) {
     *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "estimation/EskfOptions.hpp"
+#include "estimation/MotionPriorOptions.hpp"
 #include "map/DistanceMapOptions.hpp"
 #include "matching/GpfOptions.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -12,6 +13,7 @@ namespace unimap::pipeline {
 // payload's CoreParameters (FromPlatform), the rest are shared defaults.
 struct LocalizerOptions {
   estimation::EskfOptions eskf;     // IMU noise (sigma_a, sigma_g) and initial uncertainty
+  estimation::MotionPriorOptions motion;  // prediction source (IMU, or a prior for data without one)
   matching::GpfOptions gpf;         // particles, likelihood, downsampling
   map::DistanceMapOptions map;      // resolution and box (distance-map max range)
   int scans_per_3d_scan = 1;        // N: scans accumulated before a map insertion

@@ -43,6 +43,8 @@ void Mapper::AddEncoder(const EncoderSample& sample) { localizer_->AddEncoder(sa
 
 void Mapper::AddScan(io::ScanRecord scan) { localizer_->AddScan(std::move(scan)); }
 
+void Mapper::AddOdometry(const OdometrySample& sample) { localizer_->AddOdometry(sample); }
+
 void Mapper::Finish() {
   localizer_->Finish();
   PollOptimiser(true);

@@ -46,6 +46,7 @@ class Mapper : public EventSink {
   void AddImu(const ImuSample& sample) override;
   void AddEncoder(const EncoderSample& sample) override;
   void AddScan(io::ScanRecord scan) override;
+  void AddOdometry(const OdometrySample& sample) override;
   // Processes the remaining scans and runs a final optimisation.
   void Finish() override;
   // Localised poses (local odometry frame, as the filter estimated them) since the last call.

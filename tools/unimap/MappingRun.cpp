@@ -7,6 +7,7 @@
 #include "RunOutputs.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
+#include "estimation/MotionPriorOptions.hpp"
 #include "pipeline/Mapper.hpp"
 #include "unimap/CoreParameters.hpp"
 #include "unimap/Errors.hpp"
@@ -26,6 +27,9 @@ int RunMappingToFolder(const MappingRunOptions& options) {
         pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
     mapper_options.localizer.gpf.threads = options.threads;
     mapper_options.loop_search.enabled = !options.no_loop_closure;
+    if (!estimation::ParseMotionSource(options.motion, &mapper_options.localizer.motion.source)) {
+      throw InputError("--motion: unknown source '" + options.motion + "' (imu, odometry, constant-velocity)");
+    }
     io::DatasetReader reader(options.data_dir);
     if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
       std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload

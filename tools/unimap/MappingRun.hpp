@@ -13,6 +13,7 @@ struct MappingRunOptions {
   int threads = 1;              // GPF threads
   bool quiet = false;           // no progress line
   bool no_loop_closure = false;  // map without loop-closure search
+  std::string motion = "imu";    // prediction source: imu, odometry (odometry.csv) or constant-velocity
 };
 
 // Runs the Mapper over the dataset and writes trajectory_odometry.tum

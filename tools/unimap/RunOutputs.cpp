@@ -65,6 +65,8 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   o.Add("scans_bad_input", s.scans_bad_input);
   o.Add("scans_no_encoder", s.scans_no_encoder);
   o.Add("scans_out_of_order", s.scans_out_of_order);
+  o.Add("scans_no_motion", s.scans_no_motion);
+  o.Add("odometry_samples", s.odometry_samples);
   o.Add("beams_dropped", s.beams_dropped);
   o.Add("map_insertions", s.map_insertions);
   o.Add("map_errors", s.map_errors);

@@ -83,6 +83,37 @@ double ChiSquareQuantile(double dof, double z) {
   return dof * std::pow(1.0 - c + z * std::sqrt(c), 3.0);
 }
 
+TEST(Eskf, PredictPoseMovesByTheBodyIncrementAndAddsItsCovariance) {
+  Eskf eskf(EskfOptions{});
+  NavState start;
+  start.time_s = 1.0;
+  start.p_world_body_m = Eigen::Vector3d(1.0, 2.0, 3.0);
+  start.q_world_body = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()));
+  eskf.Initialize(start, ErrorCovariance::Zero());
+  Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
+  step.translation() = Eigen::Vector3d(0.5, 0.0, 0.1);  // forward in the body frame
+  step.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  Matrix6d q = Matrix6d::Zero();
+  q.diagonal() << 0.01, 0.04, 0.09, 1e-4, 4e-4, 9e-4;
+  eskf.PredictPose(1.5, step, q);
+  const NavState& s = eskf.state();
+  EXPECT_EQ(s.time_s, 1.5);
+  // Body x points along world y after the 90 deg yaw: p += R dp.
+  EXPECT_TRUE(s.p_world_body_m.isApprox(Eigen::Vector3d(1.0, 2.5, 3.1), 1e-12));
+  EXPECT_NEAR(Eigen::AngleAxisd(s.q_world_body).angle(), M_PI / 2.0 + 0.1, 1e-12);
+  EXPECT_TRUE(s.v_world_m_s.isApprox(Eigen::Vector3d(0.0, 1.0, 0.2), 1e-12));
+  // From zero covariance, the position block is R Q_p R^T (x and y swap) and
+  // the attitude block Q_theta.
+  const Matrix6d p = eskf.PoseCovariance();
+  EXPECT_NEAR(p(0, 0), 0.04, 1e-12);
+  EXPECT_NEAR(p(1, 1), 0.01, 1e-12);
+  EXPECT_NEAR(p(2, 2), 0.09, 1e-12);
+  EXPECT_TRUE((p.bottomRightCorner<3, 3>().isApprox(q.bottomRightCorner<3, 3>(), 1e-12)));
+  // A second step carries the attitude uncertainty into position: dp' = dp - R [dp_inc]x dtheta.
+  eskf.PredictPose(2.0, step, Matrix6d::Zero());
+  EXPECT_GT(eskf.PoseCovariance()(0, 0) + eskf.PoseCovariance()(1, 1), 0.05 - 1e-12);
+}
+
 TEST(Eskf, FilterIsConsistentOverMonteCarloRuns) {
   EskfOptions options;
   options.sigma_accel_m_s2 = 0.05;

@@ -1,0 +1,41 @@
+#include "estimation/MotionPriorOptions.hpp"
+
+#include <cmath>
+
+namespace unimap::estimation {
+
+bool MotionPriorOptions::IsValid(std::string* why) const {
+  const double values[] = {odometry_sigma_per_m, odometry_sigma_rad_per_rad, odometry_sigma_rad_per_m,
+                           odometry_min_sigma_m, odometry_min_sigma_rad,      velocity_sigma_m_s,
+                           rate_sigma_rad_s};
+  for (double v : values) {
+    if (!(v >= 0.0) || !std::isfinite(v)) {
+      if (why != nullptr) *why = "motion prior sigmas must be finite and >= 0";
+      return false;
+    }
+  }
+  if (!(odometry_min_sigma_m > 0.0) || !(odometry_min_sigma_rad > 0.0)) {
+    if (why != nullptr) *why = "odometry_min_sigma_m and odometry_min_sigma_rad must be > 0";
+    return false;
+  }
+  if (!(max_odometry_gap_s > 0.0)) {
+    if (why != nullptr) *why = "max_odometry_gap_s must be > 0";
+    return false;
+  }
+  return true;
+}
+
+bool ParseMotionSource(const std::string& text, MotionSource* source) {
+  if (text == "imu") {
+    *source = MotionSource::kImu;
+  } else if (text == "odometry") {
+    *source = MotionSource::kWheelOdometry;
+  } else if (text == "constant-velocity") {
+    *source = MotionSource::kConstantVelocity;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace unimap::estimation

@@ -1,0 +1,32 @@
+#pragma once
+#include <string>
+
+namespace unimap::estimation {
+
+// Where the localiser's prediction between scans comes from.
+enum class MotionSource {
+  kImu,               // the ESKF integrates the IMU (default; the paper's method)
+  kWheelOdometry,     // increments of the dataset's odometry.csv
+  kConstantVelocity,  // the velocity of the last two localised poses
+};
+
+// Noise of the motion priors used without an IMU.
+struct MotionPriorOptions {
+  MotionSource source = MotionSource::kImu;      // see MotionSource
+  double odometry_sigma_per_m = 0.05;            // wheel odometry: position sigma per metre travelled
+  double odometry_sigma_rad_per_rad = 0.05;      // wheel odometry: rotation sigma per radian turned
+  double odometry_sigma_rad_per_m = 0.005;       // wheel odometry: rotation sigma per metre travelled
+  double odometry_min_sigma_m = 0.005;           // wheel odometry: position sigma floor per step (m)
+  double odometry_min_sigma_rad = 0.002;         // wheel odometry: rotation sigma floor per step (rad)
+  double max_odometry_gap_s = 0.5;               // an odometry gap longer than this around a scan: no prediction
+  double velocity_sigma_m_s = 0.3;               // constant velocity: unmodelled velocity change (m/s)
+  double rate_sigma_rad_s = 0.2;                 // constant velocity: unmodelled angular-rate change (rad/s)
+
+  // True when every field is in range; otherwise false with the reason in *why.
+  bool IsValid(std::string* why) const;
+};
+
+// "imu", "odometry", "constant-velocity"; false for anything else.
+bool ParseMotionSource(const std::string& text, MotionSource* source);
+
+}  // namespace unimap::estimation
