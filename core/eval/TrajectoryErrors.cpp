@@ -23,18 +23,17 @@ double Heading(const Eigen::Isometry3d& T_world_body) {
   return std::atan2(T_world_body.linear()(1, 0), T_world_body.linear()(0, 0));
 }
 
-// The transform placing the estimate's frame in the truth's (see Anchor).
-Eigen::Isometry3d AnchorTransform(const AssociatedPose& first, Anchor anchor) {
-  if (anchor == Anchor::kFullPose) return first.T_true_body * first.T_est_body.inverse();
+}  // namespace
+
+Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const Eigen::Isometry3d& T_est_first,
+                                  Anchor anchor) {
+  if (anchor == Anchor::kFullPose) return T_true_first * T_est_first.inverse();
   Eigen::Isometry3d T_true_est = Eigen::Isometry3d::Identity();
   T_true_est.linear() =
-      Eigen::AngleAxisd(Heading(first.T_true_body) - Heading(first.T_est_body), Eigen::Vector3d::UnitZ())
-          .toRotationMatrix();
-  T_true_est.translation() = first.T_true_body.translation() - T_true_est.linear() * first.T_est_body.translation();
+      Eigen::AngleAxisd(Heading(T_true_first) - Heading(T_est_first), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T_true_est.translation() = T_true_first.translation() - T_true_est.linear() * T_est_first.translation();
   return T_true_est;
 }
-
-}  // namespace
 
 TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association, Anchor anchor) {
   const std::vector<AssociatedPose>& pairs = association.pairs;
@@ -51,7 +50,7 @@ TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& associatio
   errors.alignment = AlignRigid(est_positions, true_positions);
 
   // T_true_est: places the estimate's first pose on the truth's (see Anchor).
-  const Eigen::Isometry3d T_true_est = AnchorTransform(pairs.front(), anchor);
+  const Eigen::Isometry3d T_true_est = AnchorTransform(pairs.front().T_true_body, pairs.front().T_est_body, anchor);
   errors.poses.reserve(pairs.size());
   double distance_m = 0.0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {

@@ -44,6 +44,11 @@ struct TrajectoryErrors {
 TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& association,
                                          Anchor anchor = Anchor::kYawPosition);
 
+// The transform T_true_est placing the estimate's frame in the truth's from
+// the first poses of both (see Anchor).
+Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const Eigen::Isometry3d& T_est_first,
+                                  Anchor anchor);
+
 // log: unit quaternion -> rotation vector (angle * axis, angle in [0, pi]);
 // q and -q give the same result.
 Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q);

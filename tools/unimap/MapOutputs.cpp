@@ -5,6 +5,7 @@
 
 #include <octomap/OcTree.h>
 
+#include "eval/TrajectoryErrors.hpp"
 #include "io/KittiTrajectoryWriter.hpp"
 #include "io/PcdWriter.hpp"
 #include "io/PlyWriter.hpp"
@@ -81,9 +82,10 @@ JsonObject LoopPointErrors(const std::vector<StampedPose>& odometry, const std::
   if (before == nullptr || after == nullptr || true_pose == nullptr || odometry.empty()) return o;
   const StampedPose* true_start = Nearest(truth, odometry.front().time_s, kMaxDt);
   if (true_start == nullptr) return o;
-  // Start-anchored (as drift_percent): both trajectories begin in the local
-  // frame of the first pose, which the first (fixed) graph node keeps.
-  const Eigen::Isometry3d T_truth_estimate = true_start->T_map_body * odometry.front().T_map_body.inverse();
+  // Start-anchored on position and heading (as drift_percent): both
+  // trajectories begin in the local frame, which the first (fixed) graph node keeps.
+  const Eigen::Isometry3d T_truth_estimate =
+      eval::AnchorTransform(true_start->T_map_body, odometry.front().T_map_body, eval::Anchor::kYawPosition);
   o.Add("time_s", time_s);
   o.Add("odometry", ErrorsAt(T_truth_estimate, *before, *true_pose));
   o.Add("optimized", ErrorsAt(T_truth_estimate, *after, *true_pose));

@@ -23,8 +23,8 @@ struct MapOutputOptions {
 JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
                            const MapOutputOptions& options);
 
-// Position errors (start-anchored: the estimates moved by T_true(0)
-// T_est(0)^-1, the first odometry pose) of the odometry and the optimised
+// Position errors (start-anchored on the first odometry pose's position and
+// heading, eval::AnchorTransform) of the odometry and the optimised
 // trajectories against the truth at time_s (the first loop closure), as {"time_s", "odometry": {...}, "optimized": {...}} with
 // "height_error_m" (|dz|) and "position_error_m"; an empty object when no
 // pose lies within 0.1 s of time_s.
