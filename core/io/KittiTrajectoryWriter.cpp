@@ -1,7 +1,6 @@
 #include "io/KittiTrajectoryWriter.hpp"
 
 #include <string>
-#include <system_error>
 
 #include "io/NumberText.hpp"
 #include "io/PartialFile.hpp"
@@ -32,21 +31,13 @@ void WriteKittiTrajectory(const std::filesystem::path& file, const std::vector<S
     const std::string problem = TumPoseProblem(0.0, poses[k].T_map_body);
     if (!problem.empty()) throw InputError(file.string() + ": pose " + std::to_string(k) + ": " + problem);
   }
-  std::filesystem::path partial_path;
-  try {
-    PartialFile out(file);
-    partial_path = out.partial_path();
+  WriteWholeFile(file, [&](PartialFile& out) {
     std::string line;
     for (const StampedPose& pose : poses) {
       KittiRow(pose.T_map_body, &line);
       out.Write(line);
     }
-    out.Commit();
-  } catch (const InputError&) {
-    std::error_code ec;  // nothing half-written stays behind
-    if (!partial_path.empty()) std::filesystem::remove(partial_path, ec);
-    throw;
-  }
+  });
 }
 
 }  // namespace unimap::io

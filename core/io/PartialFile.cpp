@@ -63,4 +63,18 @@ void PartialFile::Commit() {
   }
 }
 
+void WriteWholeFile(const std::filesystem::path& file, const std::function<void(PartialFile&)>& write) {
+  std::filesystem::path partial_path;
+  try {
+    PartialFile out(file);
+    partial_path = out.partial_path();
+    write(out);
+    out.Commit();
+  } catch (...) {
+    std::error_code ignored;
+    if (!partial_path.empty()) std::filesystem::remove(partial_path, ignored);
+    throw;
+  }
+}
+
 }  // namespace unimap::io

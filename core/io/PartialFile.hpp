@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,5 +42,10 @@ class PartialFile {
   std::FILE* stream_ = nullptr;         // open while writing, null once committed
   std::vector<char> buffer_;            // stdio buffer (outlives stream_)
 };
+
+// Writes a whole file at once: write fills a PartialFile for file, which is
+// then committed. On any exception the ".partial" file is removed (nothing
+// half-written stays behind) and the exception is rethrown.
+void WriteWholeFile(const std::filesystem::path& file, const std::function<void(PartialFile&)>& write);
 
 }  // namespace unimap::io

@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
-#include <system_error>
 
 #include "io/PartialFile.hpp"
 #include "unimap/Errors.hpp"
@@ -42,10 +41,7 @@ void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector
       throw InputError(file.string() + ": point " + std::to_string(i) + " is not finite (PLY map points must be)");
     }
   }
-  std::filesystem::path partial_path;
-  try {
-    PartialFile out(file);
-    partial_path = out.partial_path();
+  WriteWholeFile(file, [&](PartialFile& out) {
     out.Write(Header(points_map.size()));
     std::string chunk;
     chunk.reserve(kChunkPoints * 12);
@@ -57,12 +53,7 @@ void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector
       }
       out.Write(chunk);
     }
-    out.Commit();
-  } catch (const InputError&) {
-    std::error_code ec;  // nothing half-written stays behind
-    if (!partial_path.empty()) std::filesystem::remove(partial_path, ec);
-    throw;
-  }
+  });
 }
 
 }  // namespace unimap::io

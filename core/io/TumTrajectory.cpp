@@ -1,7 +1,5 @@
 #include "io/TumTrajectory.hpp"
 
-#include <system_error>
-
 #include "io/DatasetLayout.hpp"
 #include "io/NumberLineStream.hpp"
 #include "io/NumberText.hpp"
@@ -47,10 +45,7 @@ std::vector<StampedPose> ReadTumTrajectory(const std::filesystem::path& file) {
 }
 
 void WriteTumTrajectory(const std::filesystem::path& file, const std::vector<StampedPose>& poses) {
-  std::filesystem::path partial_path;
-  try {
-    PartialFile partial(file);
-    partial_path = partial.partial_path();
+  WriteWholeFile(file, [&](PartialFile& partial) {
     partial.Write(layout::kPoseHeader);
     std::string line;
     double last_time_s = 0.0;
@@ -59,12 +54,7 @@ void WriteTumTrajectory(const std::filesystem::path& file, const std::vector<Sta
       AppendCheckedRow(file, pose, &last_time_s, &has_last, &line);
       partial.Write(line);
     }
-    partial.Commit();
-  } catch (const InputError&) {
-    std::error_code ec;  // nothing half-written stays behind
-    if (!partial_path.empty()) std::filesystem::remove(partial_path, ec);
-    throw;
-  }
+  });
 }
 
 TumTrajectoryWriter::TumTrajectoryWriter(const std::filesystem::path& file)

@@ -1,7 +1,6 @@
 #include "map/OctomapWriter.hpp"
 
 #include <streambuf>
-#include <system_error>
 
 #include <octomap/OcTree.h>
 
@@ -37,10 +36,7 @@ class PartialFileBuffer : public std::streambuf {
 }  // namespace
 
 void WriteOctomapBinary(const std::filesystem::path& file, const octomap::OcTree& tree) {
-  std::filesystem::path partial_path;
-  try {
-    io::PartialFile out(file);
-    partial_path = out.partial_path();
+  io::WriteWholeFile(file, [&](io::PartialFile& out) {
     PartialFileBuffer buffer(&out);
     std::ostream stream(&buffer);
     // PartialFile throws InputError on a write failure; the stream must let
@@ -49,12 +45,7 @@ void WriteOctomapBinary(const std::filesystem::path& file, const octomap::OcTree
     if (!tree.writeBinaryConst(stream) || !stream) {
       throw InputError(file.string() + ": OctoMap could not serialise the tree");
     }
-    out.Commit();
-  } catch (const InputError&) {
-    std::error_code ec;  // nothing half-written stays behind
-    if (!partial_path.empty()) std::filesystem::remove(partial_path, ec);
-    throw;
-  }
+  });
 }
 
 }  // namespace unimap::map

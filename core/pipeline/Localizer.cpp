@@ -45,38 +45,40 @@ LocalizerOptions Checked(LocalizerOptions options) {
   return options;
 }
 
+// The map of a Localizer that owns it: the prior, or a new one from the
+// (checked) options.
+std::shared_ptr<map::ScanMap> OwnMap(const LocalizerOptions& options, std::unique_ptr<map::DistanceMap> prior_map) {
+  if (prior_map) return prior_map;
+  return std::make_shared<map::DistanceMap>(Checked(options).map);
+}
+
 }  // namespace
 
 Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
                      std::unique_ptr<map::DistanceMap> prior_map,
                      std::optional<Eigen::Isometry3d> initial_pose)
-    : options_(Checked(options)),
-      plugin_(std::move(plugin)),
-      map_(prior_map ? std::move(prior_map) : std::make_unique<map::DistanceMap>(options_.map)),
-      initial_pose_(initial_pose),
-      eskf_(options_.eskf),
-      gpf_(options_.gpf),
-      encoder_(std::vector<EncoderSample>{}, 0.5),
-      history_(2.0),
-      accumulator_(options_.scans_per_3d_scan) {
-  if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
-  prior_ = MakePrior(options_.motion);
-}
+    : Localizer(options, std::move(plugin), OwnMap(options, std::move(prior_map)), initial_pose, nullptr) {}
 
 Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
                      std::shared_ptr<map::ScanMap> map, KeyScanSink on_key_scan)
+    : Localizer(options, std::move(plugin), std::move(map), std::nullopt, std::move(on_key_scan)) {}
+
+Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
+                     std::shared_ptr<map::ScanMap> map, std::optional<Eigen::Isometry3d> initial_pose,
+                     KeyScanSink on_key_scan)
     : options_(Checked(options)),
       plugin_(std::move(plugin)),
       map_(std::move(map)),
       on_key_scan_(std::move(on_key_scan)),
+      initial_pose_(initial_pose),
       eskf_(options_.eskf),
+      prior_(MakePrior(options_.motion)),
       gpf_(options_.gpf),
       encoder_(std::vector<EncoderSample>{}, 0.5),
       history_(2.0),
       accumulator_(options_.scans_per_3d_scan) {
   if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
   if (!map_) throw std::invalid_argument("Localizer: no map");
-  prior_ = MakePrior(options_.motion);
 }
 
 Localizer::~Localizer() = default;

@@ -89,6 +89,9 @@ class Localizer : public EventSink {
   Eigen::Matrix<double, 6, 6> PoseCovariance() const { return eskf_.PoseCovariance(); }
 
  private:
+  // The constructors above delegate here.
+  Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin, std::shared_ptr<map::ScanMap> map,
+            std::optional<Eigen::Isometry3d> initial_pose, KeyScanSink on_key_scan);
   void TryInitialize();
   // Without an IMU: starts the filter at the first scan (given pose or level origin).
   void InitializeWithoutImu(double time_s);

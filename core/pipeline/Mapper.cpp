@@ -81,7 +81,6 @@ void Mapper::OnKeyScan(KeyScan&& key) {
     for (const LoopClosure& closure : finder_.Search(k, points_body, T_world_body, path_m_, graph_)) {
       graph_.AddLoopClosure(closure);
       if (!any_closure_) stats_.first_loop_closure_time_s = key.time_s;
-      ++closures_since_submit_;
       any_closure_ = true;
     }
     for (const std::string& m : finder_.TakeMessages()) Note(m);
@@ -95,7 +94,7 @@ void Mapper::OnKeyScan(KeyScan&& key) {
 
 void Mapper::SubmitOptimisation() {
   PollOptimiser(false);
-  if (optimizer_.Submit(graph_.graph())) closures_since_submit_ = 0;
+  optimizer_.Submit(graph_.graph());  // busy: the next submission carries these constraints
   if (options_.wait_for_background) PollOptimiser(true);
 }
 
@@ -117,14 +116,6 @@ std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
   std::vector<StampedPose> out;
   out.reserve(local_poses_.size());
   for (const ScanPose& p : local_poses_) out.push_back({p.time_s, graph_.ToWorld(p.time_s, p.T_map_body)});
-  return out;
-}
-
-std::vector<StampedPose> Mapper::KeyScanTrajectory() const {
-  std::vector<StampedPose> out;
-  for (std::size_t k = 0; k < graph_.key_scan_count(); ++k) {
-    out.push_back({graph_.key_scan_time(static_cast<int>(k)), graph_.T_world_key(static_cast<int>(k))});
-  }
   return out;
 }
 

@@ -59,8 +59,6 @@ class Mapper : public EventSink {
   // Every key scan's points in the world frame (optimised poses), one per
   // voxel_m voxel.
   std::vector<Eigen::Vector3f> MapPoints(double voxel_m) const;
-  // The key scans' poses in the world frame (optimised), in time order.
-  std::vector<StampedPose> KeyScanTrajectory() const;
   const Eigen::Isometry3d& T_world_local() const { return graph_.T_world_local(); }
   const LocalizerStats& localizer_stats() const { return localizer_->stats(); }
   MapperStats stats() const;
@@ -80,7 +78,6 @@ class Mapper : public EventSink {
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan
   double path_m_ = 0.0;                                     // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
-  std::size_t closures_since_submit_ = 0;
   bool any_closure_ = false;
   MapperStats stats_;
   std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above

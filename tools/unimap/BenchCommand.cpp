@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "Commands.hpp"
+#include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
@@ -51,12 +52,6 @@ struct BenchmarkCase {
   std::string description;  // one paragraph: what runs, on what data
   std::function<std::vector<BenchmarkFigure>(const BenchOptions&)> run;  // throws on failure
 };
-
-std::string Fixed(double value, int digits) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << value;
-  return out.str();
-}
 
 // Simulates a scenario with its default payload into a temporary folder.
 std::vector<BenchmarkFigure> SimulateScenario(const BenchOptions& options, const std::string& scenario_name) {

@@ -3,7 +3,6 @@
 // truth and prints the result beside the paper's numbers.
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "MappingRun.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
+#include "TextFormat.hpp"
 #include "TextTable.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
 #include "io/TumTrajectory.hpp"
@@ -30,12 +30,6 @@ struct DemoOptions {
   double duration_s = 0.0;              // simulate only this much (0: the whole 15-minute flight)
   int threads = 2;                      // GPF threads (the README machine has two cores)
 };
-
-std::string Format(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
-}
 
 // configs/ in the working folder, else the installed share/unimap/configs
 // beside the executable.
@@ -57,20 +51,20 @@ fs::path FindConfigs(const std::string& given) {
 
 // The evaluation beside the paper's Table (simulated tunnel, rotating Hokuyo).
 void PrintComparison(const eval::TrajectoryMetrics& m) {
-  const auto opt = [](const std::optional<double>& v, int digits) { return v ? Format(*v, digits) : "n/a"; };
+  const auto opt = [](const std::optional<double>& v, int digits) { return v ? Fixed(*v, digits) : "n/a"; };
   TextTable table({"metric", "unimap", "paper"});
   table.AddRow({"max position error x / y / z (m)",
-                Format(m.max_abs_error_m.x(), 2) + " / " + Format(m.max_abs_error_m.y(), 2) + " / " +
-                    Format(m.max_abs_error_m.z(), 2),
+                Fixed(m.max_abs_error_m.x(), 2) + " / " + Fixed(m.max_abs_error_m.y(), 2) + " / " +
+                    Fixed(m.max_abs_error_m.z(), 2),
                 "2.00 / 0.37 / 1.11"});
   table.AddRow({"translational drift (% of path)", opt(m.drift_percent, 2), "1.34"});
   table.AddRow({"mean abs roll / pitch / yaw error (deg)",
-                Format(m.mean_abs_rot_error_deg.x(), 2) + " / " + Format(m.mean_abs_rot_error_deg.y(), 2) + " / " +
-                    Format(m.mean_abs_rot_error_deg.z(), 2),
+                Fixed(m.mean_abs_rot_error_deg.x(), 2) + " / " + Fixed(m.mean_abs_rot_error_deg.y(), 2) + " / " +
+                    Fixed(m.mean_abs_rot_error_deg.z(), 2),
                 "0.14 / 0.15 / 0.24"});
   table.AddRow({"rotational drift (deg/m)", opt(m.rot_drift_deg_per_m, 4), "0.003"});
-  table.AddRow({"ATE RMSE, SE(3)-aligned (m)", Format(m.ate_rmse_m, 3), "-"});
-  table.AddRow({"path length (m)", Format(m.path_length_m, 1), "165"});
+  table.AddRow({"ATE RMSE, SE(3)-aligned (m)", Fixed(m.ate_rmse_m, 3), "-"});
+  table.AddRow({"path length (m)", Fixed(m.path_length_m, 1), "165"});
   std::cout << '\n';
   table.Print(std::cout, "  ");
 }
@@ -86,8 +80,8 @@ int RunDemo(const DemoOptions& options) {
     if (options.duration_s > 0.0) simulation.duration_s = options.duration_s;
     std::cout << "1/3 simulating the paper's tunnel (rotating Hokuyo) into " << data.string() << " ...\n";
     const sim::SimulationSummary s = sim::Simulator(scenario, simulation).Run();
-    std::cout << "    " << Format(s.duration_s, 0) << " s of data, " << Format(s.path_length_m, 1) << " m, "
-              << s.scans << " scans, in " << Format(s.wall_s, 1) << " s\n";
+    std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, "
+              << s.scans << " scans, in " << Fixed(s.wall_s, 1) << " s\n";
 
     std::cout << "2/3 mapping it (unimap run) ...\n";
     MappingRunOptions run;

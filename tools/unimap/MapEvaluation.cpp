@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
+#include "TextFormat.hpp"
 #include "WorldLoader.hpp"
 #include "eval/AtomicFile.hpp"
 #include "eval/HtmlReport.hpp"
@@ -23,12 +23,6 @@ std::string Lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
-}
-
-std::string Fixed(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.4f", value);
-  return buffer;
 }
 
 std::string ReadWholeFile(const std::filesystem::path& file) {
@@ -53,15 +47,15 @@ std::vector<MapMetric> Metrics(const MapEvaluation& e) {
     return e.aligned ? eval::JsonNumber((*e.aligned).*field) : std::string("null");
   };
   const auto aligned_shown = [&](double eval::MapErrorStats::*field) {
-    return e.aligned ? Fixed((*e.aligned).*field) : std::string("n/a");
+    return e.aligned ? Fixed((*e.aligned).*field, 4) : std::string("n/a");
   };
   using S = eval::MapErrorStats;
   return {
-      {"map_error_mean_m", eval::JsonNumber(u.mean_m), Fixed(u.mean_m),
+      {"map_error_mean_m", eval::JsonNumber(u.mean_m), Fixed(u.mean_m, 4),
        "mean distance of the map points to the true surfaces (no alignment), m"},
-      {"map_error_p95_m", eval::JsonNumber(u.p95_m), Fixed(u.p95_m),
+      {"map_error_p95_m", eval::JsonNumber(u.p95_m), Fixed(u.p95_m, 4),
        "95th percentile (nearest rank) of that distance, m"},
-      {"map_error_max_m", eval::JsonNumber(u.max_m), Fixed(u.max_m), "largest distance of a map point, m"},
+      {"map_error_max_m", eval::JsonNumber(u.max_m), Fixed(u.max_m, 4), "largest distance of a map point, m"},
       {"map_points", std::to_string(u.points), std::to_string(u.points), "map points evaluated"},
       {"map_error_aligned_mean_m", aligned(&S::mean_m), aligned_shown(&S::mean_m),
        "mean distance after moving the map by the ATE alignment, m"},

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "Commands.hpp"
+#include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
 #include "WorldMap.hpp"
@@ -27,12 +28,6 @@ struct SimulateOptions {
   std::optional<double> duration_s;     // stop early
   bool quiet = false;                   // no progress line
 };
-
-std::string Fixed(double value, int digits) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << value;
-  return out.str();
-}
 
 void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_file, const std::string& out) {
   const double rtf = s.wall_s > 0.0 ? s.duration_s / s.wall_s : 0.0;
