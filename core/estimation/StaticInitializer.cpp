@@ -43,8 +43,35 @@ StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
                      Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
   out.gyro_bias_rad_s = mean_w;
   out.gravity_m_s2 = f.norm();
+  out.mean_specific_force_m_s2 = f;
   out.ok = true;
   return out;
+}
+
+void PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d& T_world_body, bool pose_attitude,
+                 double gravity_m_s2, double max_accel_bias_m_s2, NavState* state, std::string* note) {
+  state->p_world_body_m = T_world_body.translation();
+  const Eigen::Matrix3d R_pose = T_world_body.linear();
+  if (!alignment.ok) {
+    state->q_world_body = Eigen::Quaterniond(R_pose);
+    return;
+  }
+  if (pose_attitude) {
+    const Eigen::Vector3d b_a =
+        alignment.mean_specific_force_m_s2 - R_pose.transpose() * Eigen::Vector3d(0.0, 0.0, gravity_m_s2);
+    if (b_a.norm() <= max_accel_bias_m_s2) {
+      state->q_world_body = Eigen::Quaterniond(R_pose);
+      state->accel_bias_m_s2 = b_a;
+      return;
+    }
+    *note = "its tilt disagrees with gravity (implied accelerometer bias " + std::to_string(b_a.norm()) +
+            " m/s^2): roll and pitch from gravity instead";
+  }
+  // Heading of the pose's x axis, roll and pitch of the alignment (yaw-pitch-roll).
+  const double yaw = std::atan2(R_pose(1, 0), R_pose(0, 0));
+  const Eigen::Matrix3d R_gravity = alignment.q_world_body.toRotationMatrix();
+  const double gravity_yaw = std::atan2(R_gravity(1, 0), R_gravity(0, 0));
+  state->q_world_body = Eigen::AngleAxisd(yaw - gravity_yaw, Eigen::Vector3d::UnitZ()) * alignment.q_world_body;
 }
 
 }  // namespace unimap::estimation

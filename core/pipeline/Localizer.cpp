@@ -196,9 +196,11 @@ void Localizer::TryInitialize() {
     stats_.messages.push_back("initial alignment: " + alignment.reason + "; starting level");
   }
   if (initial_pose_) {
-    // The given pose fixes position and heading; roll and pitch stay from gravity when aligned.
-    state.p_world_body_m = initial_pose_->translation();
-    state.q_world_body = Eigen::Quaterniond(initial_pose_->linear());
+    std::string note;
+    const bool pose_attitude = options_.initial_attitude == LocalizerOptions::InitialAttitude::kPose;
+    estimation::PlaceAtPose(alignment, *initial_pose_, pose_attitude, options_.eskf.gravity_m_s2,
+                options_.max_initial_accel_bias_m_s2, &state, &note);
+    if (!note.empty() && stats_.messages.size() < kMaxMessages) stats_.messages.push_back("initial pose: " + note);
   }
   eskf_.Initialize(state);
   eskf_.Propagate(init_imu_.back());

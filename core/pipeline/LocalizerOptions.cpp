@@ -20,9 +20,9 @@ bool LocalizerOptions::IsValid(std::string* why) const {
   }
   if (!motion.IsValid(why)) return false;
   if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
-      !(max_scan_latency_s > 0.0)) {
+      !(max_scan_latency_s > 0.0) || !(max_initial_accel_bias_m_s2 > 0.0)) {
     *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
-           "max_scan_latency_s > 0";
+           "max_scan_latency_s and max_initial_accel_bias_m_s2 > 0";
     return false;
   }
   return true;

@@ -12,12 +12,21 @@ namespace unimap::pipeline {
 // Everything the localiser needs; per-platform values come from the
 // payload's CoreParameters (FromPlatform), the rest are shared defaults.
 struct LocalizerOptions {
+  // Where the initial attitude comes from when an initial pose is given.
+  enum class InitialAttitude {
+    kGravity,  // roll and pitch from the static start's gravity, heading from the pose
+    kPose,     // the pose's attitude; the static start's mean specific force then gives the
+               // accelerometer bias (b_a = f - R^T g), which gravity alignment cannot tell from tilt
+  };
   estimation::EskfOptions eskf;     // IMU noise (sigma_a, sigma_g) and initial uncertainty
   estimation::MotionPriorOptions motion;  // prediction source (IMU, or a prior for data without one)
   matching::GpfOptions gpf;         // particles, likelihood, downsampling
   map::DistanceMapOptions map;      // resolution and box (distance-map max range)
   int scans_per_3d_scan = 1;        // N: scans accumulated before a map insertion
   double static_init_s = 1.0;       // IMU window at the start used to align with gravity (s)
+  InitialAttitude initial_attitude = InitialAttitude::kGravity;  // with a given initial pose
+  double max_initial_accel_bias_m_s2 = 0.3;  // kPose: a larger implied bias means the pose's tilt is
+                                             // wrong (1.75 deg at 0.3): gravity alignment is used instead
   int min_points_to_match = 30;     // scans with fewer body points are inserted unmatched
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped

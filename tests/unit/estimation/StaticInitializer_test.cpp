@@ -10,14 +10,14 @@ namespace unimap::estimation {
 namespace {
 
 std::vector<ImuSample> StaticSamples(const Eigen::Quaterniond& q, const Eigen::Vector3d& bg,
-                                     double noise, int count) {
+                                     double noise, int count, const Eigen::Vector3d& ba = Eigen::Vector3d::Zero()) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> n(0.0, noise);
   std::vector<ImuSample> out;
   for (int i = 0; i < count; ++i) {
     ImuSample s;
     s.time_s = 0.005 * i;
-    s.accel_m_s2 = q.conjugate() * Eigen::Vector3d(0, 0, 9.81) + Eigen::Vector3d(n(rng), n(rng), n(rng));
+    s.accel_m_s2 = q.conjugate() * Eigen::Vector3d(0, 0, 9.81) + ba + Eigen::Vector3d(n(rng), n(rng), n(rng));
     s.gyro_rad_s = bg + Eigen::Vector3d(n(rng), n(rng), n(rng)) * 0.1;
     out.push_back(s);
   }
@@ -45,6 +45,79 @@ TEST(AlignFromStatic, RefusesMotionAndShortWindows) {
       AlignFromStatic(StaticSamples(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 1.0, 400), options);
   EXPECT_FALSE(moving.ok);
   EXPECT_NE(moving.reason.find("not static"), std::string::npos);
+}
+
+Eigen::Isometry3d Pose(const Eigen::Quaterniond& q, const Eigen::Vector3d& p) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = q.toRotationMatrix();
+  T.translation() = p;
+  return T;
+}
+
+// A tilted body at rest with an accelerometer bias: the bias is
+// indistinguishable from tilt for gravity alignment.
+struct BiasedStart {
+  Eigen::Quaterniond q = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()) *
+                         Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY()) *
+                         Eigen::AngleAxisd(-0.03, Eigen::Vector3d::UnitX());
+  Eigen::Vector3d ba{0.05, -0.04, 0.03};
+  Eigen::Vector3d p{2.0, -1.0, 1.5};
+  StaticAlignment alignment = AlignFromStatic(StaticSamples(q, Eigen::Vector3d::Zero(), 0.0, 400, ba), {});
+};
+
+TEST(PlaceAtPose, PoseAttitudeRecoversTheAccelerometerBias) {
+  const BiasedStart start;
+  ASSERT_TRUE(start.alignment.ok);
+  // Gravity alignment alone is off by the bias over g (about 0.3 deg here).
+  EXPECT_GT(LogQ(start.alignment.q_world_body.conjugate() * start.q).tail<2>().norm(), 0.004);
+  NavState state;
+  std::string note;
+  PlaceAtPose(start.alignment, Pose(start.q, start.p), true, 9.81, 0.3, &state, &note);
+  EXPECT_TRUE(note.empty()) << note;
+  EXPECT_TRUE(state.p_world_body_m.isApprox(start.p, 1e-12));
+  EXPECT_LT(LogQ(state.q_world_body.conjugate() * start.q).norm(), 1e-12);
+  EXPECT_LT((state.accel_bias_m_s2 - start.ba).norm(), 1e-9);
+}
+
+TEST(PlaceAtPose, GravityAttitudeKeepsHeadingOfThePoseAndTiltOfGravity) {
+  const BiasedStart start;
+  NavState state;
+  std::string note;
+  PlaceAtPose(start.alignment, Pose(start.q, start.p), false, 9.81, 0.3, &state, &note);
+  EXPECT_TRUE(note.empty());
+  EXPECT_TRUE(state.accel_bias_m_s2.isZero());
+  // Up as gravity says (the biased specific force), heading as the pose says.
+  const Eigen::Vector3d up_body = state.q_world_body.conjugate() * Eigen::Vector3d::UnitZ();
+  EXPECT_LT((up_body - start.alignment.mean_specific_force_m_s2.normalized()).norm(), 1e-12);
+  const Eigen::Vector3d x_state = state.q_world_body * Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d x_pose = start.q * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(std::atan2(x_state.y(), x_state.x()), std::atan2(x_pose.y(), x_pose.x()), 1e-12);
+}
+
+TEST(PlaceAtPose, AWrongTiltFallsBackToGravityWithANote) {
+  const BiasedStart start;
+  // The given pose is level although the body is tilted by 2 deg: implied bias 0.34 m/s^2.
+  const Eigen::Quaterniond level(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()));
+  const Eigen::Quaterniond tilted = level * Eigen::AngleAxisd(0.035, Eigen::Vector3d::UnitX());
+  const StaticAlignment alignment = AlignFromStatic(StaticSamples(tilted, Eigen::Vector3d::Zero(), 0.0, 400), {});
+  NavState state;
+  std::string note;
+  PlaceAtPose(alignment, Pose(level, start.p), true, 9.81, 0.3, &state, &note);
+  EXPECT_NE(note.find("disagrees with gravity"), std::string::npos) << note;
+  EXPECT_TRUE(state.accel_bias_m_s2.isZero());
+  EXPECT_LT(LogQ(state.q_world_body.conjugate() * tilted).norm(), 1e-9);
+}
+
+TEST(PlaceAtPose, WithoutAlignmentTakesThePoseAsIs) {
+  const BiasedStart start;
+  StaticAlignment failed;
+  failed.reason = "too few samples";
+  NavState state;
+  std::string note;
+  PlaceAtPose(failed, Pose(start.q, start.p), false, 9.81, 0.3, &state, &note);
+  EXPECT_LT(LogQ(state.q_world_body.conjugate() * start.q).norm(), 1e-12);
+  EXPECT_TRUE(state.p_world_body_m.isApprox(start.p, 1e-12));
+  EXPECT_TRUE(state.accel_bias_m_s2.isZero());
 }
 
 }  // namespace
