@@ -233,15 +233,18 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   const Clock::time_point start = Clock::now();
   KeyBox endpoints;
   bool recentre = false;
+  bool inserted_any = false;  // or distances enabled: the field may change
   DistanceMapStats counts;
   for (Job& job : jobs) {
     if (job.enable_distances) {
       recentre = recentre || (!distances_on_ && has_centre_);
       distances_on_ = true;
+      inserted_any = true;
       continue;
     }
     if (!job.points_map.empty()) {
       endpoints.Extend(tree_->Insert(job.points_map, job.sensor_map));
+      inserted_any = true;
       ++counts.scans_inserted;
       counts.points_inserted += job.points_map.size();
     }
@@ -255,6 +258,11 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   }
   sequence_ += jobs.size();
   const Clock::time_point inserted = Clock::now();
+  if (!inserted_any && !recentre && last_field_ != nullptr) {
+    // Only sensor positions inside the current box (e.g. localisation in a
+    // fixed map): nothing can have changed, the last field stays published.
+    return last_field_;
+  }
 
   bool rebuilt = false;
   if (!distances_on_) {
@@ -286,6 +294,7 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
           : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m),
                                                   sequence_);
   const Clock::time_point exported = Clock::now();
+  last_field_ = field;
 
   std::lock_guard<std::mutex> stats_lock(stats_mutex_);
   stats_.scans_inserted += counts.scans_inserted;

@@ -132,6 +132,7 @@ class DistanceMap : public ScanMap {
 
   mutable std::mutex snapshot_mutex_;  // held only to copy the pointer
   std::shared_ptr<const DistanceField> snapshot_;
+  std::shared_ptr<const DistanceField> last_field_;  // worker thread only: the last export
 
   mutable std::mutex stats_mutex_;
   DistanceMapStats stats_;

@@ -258,6 +258,25 @@ std::vector<V3> Floor() {
   return SampleRectangle(V3(-2.9f, -2.9f, -0.9f), V3(5.8f, 0, 0), V3(0, 5.8f, 0), 0.1f);
 }
 
+// Localisation in a fixed map moves only the sensor: inside the box nothing
+// can change, so the published field is kept (no re-export per scan); a move
+// that recentres the box publishes a new one.
+TEST(DistanceMap, SensorMovesInsideTheBoxKeepTheField) {
+  const auto map = DistanceMap::FromPoints(Floor(), TestOptions(), V3::Zero());
+  map->WaitForUpdates();
+  const std::shared_ptr<const DistanceField> first = map->Snapshot();
+  for (int i = 1; i <= 5; ++i) {
+    map->UpdateSensorPosition(V3(0.1f * static_cast<float>(i), 0.0f, 0.5f));
+    map->WaitForUpdates();
+    EXPECT_EQ(map->Snapshot().get(), first.get()) << i;
+  }
+  const std::uint64_t rebuilds = map->Stats().rebuilds;
+  map->UpdateSensorPosition(V3(4.0f, 0.0f, 0.5f));  // beyond the recentring distance
+  map->WaitForUpdates();
+  EXPECT_NE(map->Snapshot().get(), first.get());
+  EXPECT_EQ(map->Stats().rebuilds, rebuilds + 1);
+}
+
 TEST(DistanceMap, PriorMapFromPointsOctreeAndBtFile) {
   const auto from_points = DistanceMap::FromPoints(Floor(), TestOptions(), V3::Zero());
   from_points->WaitForUpdates();
