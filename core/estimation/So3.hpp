@@ -36,4 +36,13 @@ inline Eigen::Vector3d LogQ(const Eigen::Quaterniond& q_in) {
   return 2.0 * std::atan2(s, q.w()) * v / s;
 }
 
+// A pose moved by an error e = [dp, dtheta]: (p + dp, R Exp(dtheta)), the
+// ESKF's error convention (Sola eq. 283, with the local rotation error).
+inline Eigen::Isometry3d ApplyPoseError(const Eigen::Isometry3d& T, const Eigen::Matrix<double, 6, 1>& e) {
+  Eigen::Isometry3d out = T;
+  out.translation() += e.head<3>();
+  out.linear() = T.linear() * ExpQ(e.tail<3>()).toRotationMatrix();
+  return out;
+}
+
 }  // namespace unimap::estimation

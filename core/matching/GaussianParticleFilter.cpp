@@ -21,14 +21,6 @@ std::vector<int> ActiveDims(bool planar) {
   return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
 }
 
-Eigen::Isometry3d Perturb(const Eigen::Isometry3d& T, const Vector6d& e) {
-  // p_true = p + dp, q_true = q * Exp(dtheta): the ESKF's error convention.
-  Eigen::Isometry3d out = T;
-  out.translation() += e.head<3>();
-  out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
-  return out;
-}
-
 }  // namespace
 
 struct GaussianParticleFilter::Workspace {
@@ -97,7 +89,7 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     std::vector<float> scratch_distances;
     for (int k = range.begin(); k != range.end(); ++k) {
       const auto i = static_cast<std::size_t>(k);
-      ws.log_weights[i] = likelihood.LogLikelihood(field, Perturb(T_map_body_predicted, ws.particles[i]), points,
+      ws.log_weights[i] = likelihood.LogLikelihood(field, estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]), points,
                                                    &scratch_points, &scratch_distances);
     }
   };

@@ -10,14 +10,6 @@
 namespace unimap::matching {
 namespace {
 
-// Pose at error e: p + dp, R Exp(dtheta) (the ESKF's error convention).
-Eigen::Isometry3d AtError(const Eigen::Isometry3d& T, const Vector6d& e) {
-  Eigen::Isometry3d out = T;
-  out.translation() += e.head<3>();
-  out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
-  return out;
-}
-
 // Scratch for one evaluation: transformed points, distances, gradients.
 struct Scratch {
   std::vector<Eigen::Vector3f> points_map;
@@ -76,7 +68,7 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
   };
   Scratch s;
   const auto cost = [&](const Vector6d& e) {
-    Transform(AtError(T_map_body_predicted, e), points_body, &s);
+    Transform(estimation::ApplyPoseError(T_map_body_predicted, e), points_body, &s);
     field.Distances(s.points_map.data(), n, s.distances.data());
     double sum_sq = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -87,7 +79,7 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
   };
   // Gauss-Newton system (full 6-D) at e: H = J' W J, g = J' W d; returns the cost.
   const auto linearise = [&](const Vector6d& e, Matrix6d* H, Vector6d* g) {
-    const Eigen::Isometry3d T = AtError(T_map_body_predicted, e);
+    const Eigen::Isometry3d T = estimation::ApplyPoseError(T_map_body_predicted, e);
     Transform(T, points_body, &s);
     s.gradients.resize(points_body.size());
     field.DistancesAndGradients(s.points_map.data(), n, s.distances.data(), s.gradients.data());

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "estimation/ConstantVelocityPrior.hpp"
+#include "estimation/MakeMotionPrior.hpp"
 #include "estimation/So3.hpp"
-#include "estimation/WheelOdometryPrior.hpp"
 #include "estimation/StaticInitializer.hpp"
 #include "matching/VoxelDownsampler.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
@@ -17,27 +16,6 @@ namespace unimap::pipeline {
 namespace {
 
 constexpr std::size_t kMaxMessages = 20;
-
-Eigen::Isometry3d ApplyCorrection(const Eigen::Isometry3d& T, const matching::Vector6d& e) {
-  // p + dp, q * Exp(dtheta): the ESKF's error convention.
-  Eigen::Isometry3d out = T;
-  out.translation() += e.head<3>();
-  out.linear() = T.linear() * estimation::ExpQ(e.tail<3>()).toRotationMatrix();
-  return out;
-}
-
-// The motion prior of a source other than the IMU (nullptr for the IMU).
-std::unique_ptr<estimation::MotionPrior> MakePrior(const estimation::MotionPriorOptions& options) {
-  switch (options.source) {
-    case estimation::MotionSource::kWheelOdometry:
-      return std::make_unique<estimation::WheelOdometryPrior>(options);
-    case estimation::MotionSource::kConstantVelocity:
-      return std::make_unique<estimation::ConstantVelocityPrior>(options);
-    case estimation::MotionSource::kImu:
-      break;
-  }
-  return nullptr;
-}
 
 LocalizerOptions Checked(LocalizerOptions options) {
   std::string why;
@@ -72,7 +50,7 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
       on_key_scan_(std::move(on_key_scan)),
       initial_pose_(initial_pose),
       eskf_(options_.eskf),
-      prior_(MakePrior(options_.motion)),
+      prior_(estimation::MakeMotionPrior(options_.motion)),
       gpf_(options_.gpf),
       encoder_(std::vector<EncoderSample>{}, 0.5),
       history_(2.0),
@@ -294,7 +272,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     }
   }
   ++(matched ? stats_.scans_matched : stats_.scans_unmatched);
-  const Eigen::Isometry3d T_map_body = ApplyCorrection(T_predicted, correction);
+  const Eigen::Isometry3d T_map_body = estimation::ApplyPoseError(T_predicted, correction);
   if (matched) {
     history_.Clear();
     if (t_end < eskf_.state().time_s) history_.Add(t_end, T_map_body);
