@@ -29,6 +29,18 @@ case $case_name in
     below "$pos" 0.05 || fail "position_rmse_m $pos is not below 0.05 m"
     below "$rot" 0.2 || fail "rotation_rmse_deg $rot is not below 0.2 deg"
     [ "$(json_number "$work/out/run.json" scans_unmatched)" = 0 ] || fail "unmatched scans" ;;
+  wrong_tilt_falls_back)
+    # A given pose tilted 5.7 deg against gravity: --initial-attitude pose falls back to gravity, says so.
+    code=$(run simulate --scenario "$src/configs/scenarios/tunnel.yaml" --payload "$hokuyo" --duration-s 3 \
+               --out "$work/data" --quiet)
+    [ "$code" = 0 ] || fail "simulate exit $code"
+    code=$(run localize --map "$work/data/world_map.pcd" --platform "$hokuyo" --data "$work/data" --out "$work/out" \
+               --quiet --initial-pose "2 0 1.5 0 0.05 0 1" --initial-attitude pose)
+    [ "$code" = 0 ] || fail "localize exit $code"
+    expect "attitude from the pose, accelerometer bias from the static start$"
+    grep -q '"initial pose: its tilt disagrees with gravity (implied accelerometer bias 1.0[0-9]* m/s^2): roll and pitch from gravity instead"' \
+      "$work/out/run.json" || fail "run.json lacks the fallback message"
+    grep -q '"initial_attitude": "pose"' "$work/out/run.json" || fail "run.json lacks initial_attitude" ;;
   missing_map)
     mkdir -p "$work/data"
     code=$(run localize --map "$work/no_such_map.pcd" --platform "$hokuyo" --data "$work/data" --out "$work/out")
