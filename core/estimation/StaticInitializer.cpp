@@ -48,30 +48,36 @@ StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
   return out;
 }
 
-void PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d& T_world_body, bool pose_attitude,
-                 double gravity_m_s2, double max_accel_bias_m_s2, NavState* state, std::string* note) {
+PoseStart PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d& T_world_body,
+                      InitialAttitude requested, double gravity_m_s2, double max_accel_bias_m_s2, NavState* state) {
+  PoseStart out;
   state->p_world_body_m = T_world_body.translation();
   const Eigen::Matrix3d R_pose = T_world_body.linear();
   if (!alignment.ok) {
     state->q_world_body = Eigen::Quaterniond(R_pose);
-    return;
+    out.attitude = InitialAttitude::kPose;  // the caller reports the failed alignment
+    return out;
   }
-  if (pose_attitude) {
+  if (requested == InitialAttitude::kPose) {
     const Eigen::Vector3d b_a =
         alignment.mean_specific_force_m_s2 - R_pose.transpose() * Eigen::Vector3d(0.0, 0.0, gravity_m_s2);
     if (b_a.norm() <= max_accel_bias_m_s2) {
       state->q_world_body = Eigen::Quaterniond(R_pose);
       state->accel_bias_m_s2 = b_a;
-      return;
+      out.attitude = InitialAttitude::kPose;
+      return out;
     }
-    *note = "its tilt disagrees with gravity (implied accelerometer bias " + std::to_string(b_a.norm()) +
-            " m/s^2): roll and pitch from gravity instead";
+    out.fell_back = true;
+    out.note = "its tilt disagrees with gravity (implied accelerometer bias " + std::to_string(b_a.norm()) +
+               " m/s^2): roll and pitch from gravity instead";
   }
   // Heading of the pose's x axis, roll and pitch of the alignment (yaw-pitch-roll).
   const double yaw = std::atan2(R_pose(1, 0), R_pose(0, 0));
   const Eigen::Matrix3d R_gravity = alignment.q_world_body.toRotationMatrix();
   const double gravity_yaw = std::atan2(R_gravity(1, 0), R_gravity(0, 0));
   state->q_world_body = Eigen::AngleAxisd(yaw - gravity_yaw, Eigen::Vector3d::UnitZ()) * alignment.q_world_body;
+  out.attitude = InitialAttitude::kGravity;
+  return out;
 }
 
 }  // namespace unimap::estimation

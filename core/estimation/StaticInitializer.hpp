@@ -32,15 +32,28 @@ struct StaticAlignmentOptions {
 StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
                                 const StaticAlignmentOptions& options);
 
+// Where the initial attitude comes from when an initial pose is given.
+enum class InitialAttitude {
+  kGravity,  // roll and pitch from the static start's gravity, heading from the pose
+  kPose,     // the pose's attitude; the static start's mean specific force then gives the
+             // accelerometer bias (b_a = f - R^T g), which gravity alignment cannot tell from tilt
+};
+
+// What PlaceAtPose did.
+struct PoseStart {
+  InitialAttitude attitude = InitialAttitude::kGravity;  // the source actually used
+  bool fell_back = false;  // kPose was asked for but the pose's tilt disagreed with gravity
+  std::string note;        // why it fell back (set only when fell_back)
+};
+
 // Places *state (time and gyro bias already set) at a given T_world_body
-// after a static start. Position always comes from the pose. With
-// pose_attitude the attitude does too, and the mean specific force then
-// gives the accelerometer bias b_a = f - R^T (0, 0, g), unless its norm
-// exceeds max_accel_bias_m_s2 (the pose's tilt is then taken to be wrong:
-// *note says so). Otherwise, or after that fallback, roll and pitch come
-// from gravity and the heading from the pose. Without a valid alignment
-// the pose's attitude is used as is.
-void PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d& T_world_body, bool pose_attitude,
-                 double gravity_m_s2, double max_accel_bias_m_s2, NavState* state, std::string* note);
+// after a static start. Position always comes from the pose. kPose takes the
+// pose's attitude and the accelerometer bias b_a = f - R^T (0, 0, g), unless
+// its norm exceeds max_accel_bias_m_s2: the pose's tilt is then taken to be
+// wrong and it falls back to kGravity (roll and pitch from gravity, heading
+// from the pose). Without a valid alignment the pose's attitude is used as
+// is (attitude kPose, no bias).
+PoseStart PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d& T_world_body,
+                      InitialAttitude requested, double gravity_m_s2, double max_accel_bias_m_s2, NavState* state);
 
 }  // namespace unimap::estimation

@@ -105,7 +105,7 @@ class DistanceField {
   float resolution() const { return resolution_m_; }           // cell edge (m)
   float clamp() const { return clamp_m_; }                     // clamp distance (m)
   Encoding encoding() const { return offset_m_ > 0.0f ? Encoding::kSigned : Encoding::kUnsigned; }
-  std::uint64_t sequence() const { return sequence_; }         // updates integrated
+  std::uint64_t sequence() const { return sequence_; }         // updates integrated when exported
   std::size_t CellCount() const { return cells_.size(); }
   std::size_t MemoryBytes() const { return cells_.size() * sizeof(std::uint16_t); }
 

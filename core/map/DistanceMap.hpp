@@ -29,9 +29,10 @@ class OccupancyTree;
 
 // Occupancy octree plus an incremental distance transform (DynamicEDT3D,
 // driven by OctoMap's change detection) in a box around the sensor. Scans are
-// queued and integrated on a background thread; each update publishes a new
-// immutable DistanceField that readers take with Snapshot() without ever
-// waiting for an update in progress. The box follows the sensor: when it
+// queued and integrated on a background thread; each update that can change
+// distances publishes a new immutable DistanceField (a batch that only moves
+// the sensor inside the box keeps the last one, with its sequence) that
+// readers take with Snapshot() without ever waiting for an update in progress. The box follows the sensor: when it
 // moves farther than recentre_fraction * max_range_m from the box centre, the
 // transform is rebuilt around it (the previous snapshot stays valid until the
 // new one is published). The box is clipped to the occupied voxels near the

@@ -89,8 +89,8 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     std::vector<float> scratch_distances;
     for (int k = range.begin(); k != range.end(); ++k) {
       const auto i = static_cast<std::size_t>(k);
-      ws.log_weights[i] = likelihood.LogLikelihood(field, estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]), points,
-                                                   &scratch_points, &scratch_distances);
+      const Eigen::Isometry3d T_particle = estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]);
+      ws.log_weights[i] = likelihood.LogLikelihood(field, T_particle, points, &scratch_points, &scratch_distances);
     }
   };
   if (ws.arena) {

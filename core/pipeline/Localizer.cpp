@@ -171,14 +171,17 @@ void Localizer::TryInitialize() {
     state.q_world_body = alignment.q_world_body;
     state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
   } else if (stats_.messages.size() < kMaxMessages) {
-    stats_.messages.push_back("initial alignment: " + alignment.reason + "; starting level");
+    stats_.messages.push_back("initial alignment: " + alignment.reason +
+                              (initial_pose_ ? "; attitude from the given pose" : "; starting level"));
   }
   if (initial_pose_) {
-    std::string note;
-    const bool pose_attitude = options_.initial_attitude == LocalizerOptions::InitialAttitude::kPose;
-    estimation::PlaceAtPose(alignment, *initial_pose_, pose_attitude, options_.eskf.gravity_m_s2,
-                options_.max_initial_accel_bias_m_s2, &state, &note);
-    if (!note.empty() && stats_.messages.size() < kMaxMessages) stats_.messages.push_back("initial pose: " + note);
+    const estimation::PoseStart start =
+        estimation::PlaceAtPose(alignment, *initial_pose_, options_.initial_attitude, options_.eskf.gravity_m_s2,
+                                options_.max_initial_accel_bias_m_s2, &state);
+    stats_.initial_attitude = start.attitude;
+    if (!start.note.empty() && stats_.messages.size() < kMaxMessages) {
+      stats_.messages.push_back("initial pose: " + start.note);
+    }
   }
   eskf_.Initialize(state);
   eskf_.Propagate(init_imu_.back());

@@ -10,6 +10,7 @@
 
 #include "estimation/Eskf.hpp"
 #include "estimation/MotionPrior.hpp"
+#include "estimation/StaticInitializer.hpp"
 #include "io/ScanRecord.hpp"
 #include "map/DistanceMap.hpp"
 #include "map/ScanMap.hpp"
@@ -51,6 +52,7 @@ struct LocalizerStats {
   std::size_t beams_dropped = 0;      // 2D beams without a valid return
   std::size_t map_insertions = 0;     // 3D scans inserted into the map
   std::size_t map_errors = 0;         // map updates refused (pose outside the map's range): skipped
+  std::optional<estimation::InitialAttitude> initial_attitude;  // used for a given initial pose
   std::vector<std::string> messages;  // the first few skip reasons, for the log
 };
 

@@ -3,6 +3,7 @@
 
 #include "estimation/EskfOptions.hpp"
 #include "estimation/MotionPriorOptions.hpp"
+#include "estimation/StaticInitializer.hpp"
 #include "map/DistanceMapOptions.hpp"
 #include "matching/GpfOptions.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -12,12 +13,7 @@ namespace unimap::pipeline {
 // Everything the localiser needs; per-platform values come from the
 // payload's CoreParameters (FromPlatform), the rest are shared defaults.
 struct LocalizerOptions {
-  // Where the initial attitude comes from when an initial pose is given.
-  enum class InitialAttitude {
-    kGravity,  // roll and pitch from the static start's gravity, heading from the pose
-    kPose,     // the pose's attitude; the static start's mean specific force then gives the
-               // accelerometer bias (b_a = f - R^T g), which gravity alignment cannot tell from tilt
-  };
+  using InitialAttitude = estimation::InitialAttitude;
   estimation::EskfOptions eskf;     // IMU noise (sigma_a, sigma_g) and initial uncertainty
   estimation::MotionPriorOptions motion;  // prediction source (IMU, or a prior for data without one)
   matching::GpfOptions gpf;         // particles, likelihood, downsampling

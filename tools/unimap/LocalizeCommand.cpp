@@ -1,6 +1,7 @@
 // `unimap localize`: track the pose of a dataset in a fixed prior map (an
 // OctoMap .bt or a .pcd point cloud), write the trajectory, run.json and,
 // with ground truth, the evaluation (estimate and truth share the map frame).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,7 +18,7 @@
 #include "io/PcdPointLoader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "map/DistanceMap.hpp"
-#include "map/WholeMapBox.hpp"
+#include "map/WholeMapOptions.hpp"
 #include "pipeline/DatasetRunner.hpp"
 #include "pipeline/Localizer.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -167,29 +168,39 @@ int RunLocalize(const LocalizeCliOptions& options) {
     // (hallway, rotating Hokuyo: ATE 0.80 m -> 11 m).
     localizer_options.gpf.min_sigma_position_m = 0.03;
     localizer_options.gpf.min_sigma_rotation_rad = 0.01;
+    const bool bt_map = std::filesystem::path(options.map_file).extension() == ".bt";
     if (options.map_resolution_m > 0.0) {
+      if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");
       localizer_options.map.resolution_m = options.map_resolution_m;
       localizer_options.gpf.voxel_size_m = options.map_resolution_m;
     }
-    // Distances beyond the particle filter's clamp are never read: the
-    // smaller field lets a whole tunnel fit one box (WholeMapOptions).
-    localizer_options.map.clamp_distance_m =
-        std::max(localizer_options.gpf.clamp_distance_m, localizer_options.map.resolution_m);
+    if (!bt_map) {
+      // The particle filter clamps distances at its own clamp, so a field
+      // clamped there too changes only lookups whose trilinear stencil
+      // reaches past it, and lets a whole tunnel fit one box (WholeMapOptions).
+      // (.bt maps keep the default clamp: their resolution is the file's.)
+      localizer_options.map.clamp_distance_m =
+          std::max(localizer_options.gpf.clamp_distance_m, localizer_options.map.resolution_m);
+    }
     io::DatasetReader reader(options.data_dir);
     if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
       std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
                 << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
     }
     const InitialPose initial = ChooseInitialPose(options, reader);
-    const std::string attitude =
-        !options.initial_attitude.empty() ? options.initial_attitude : (initial.source == "groundtruth" ? "pose" : "gravity");
+    const std::string attitude = !options.initial_attitude.empty() ? options.initial_attitude
+                                 : initial.source == "groundtruth"    ? "pose"
+                                                                      : "gravity";
     localizer_options.initial_attitude = attitude == "pose" ? pipeline::LocalizerOptions::InitialAttitude::kPose
                                                             : pipeline::LocalizerOptions::InitialAttitude::kGravity;
-    std::cout << "initial pose (" << initial.source << "): " << PoseText(initial.T_map_body)
-              << (initial.given ? (attitude == "pose" ? ", attitude from the pose, accelerometer bias from the static start"
-                                                      : ", heading from the pose, roll and pitch from gravity")
-                                : ", roll and pitch from gravity (no --initial-pose, no ground truth)")
-              << '\n';
+    std::cout << "initial pose (" << initial.source << "): " << PoseText(initial.T_map_body);
+    if (!initial.given) {
+      std::cout << ", roll and pitch from gravity (no --initial-pose, no ground truth)\n";
+    } else if (attitude == "pose") {
+      std::cout << ", attitude: pose (accelerometer bias from the static start)\n";
+    } else {
+      std::cout << ", attitude: gravity (heading from the pose)\n";
+    }
 
     std::size_t map_points = 0;
     bool whole_map = false;
@@ -220,7 +231,12 @@ int RunLocalize(const LocalizeCliOptions& options) {
     extra.Add("map_whole_box", whole_map);
     extra.Add("initial_pose_source", initial.source);
     extra.Add("initial_pose", PoseText(initial.T_map_body));
-    extra.Add("initial_attitude", initial.given ? attitude : std::string("gravity"));
+    // The attitude source used (a requested "pose" falls back to "gravity"
+    // when the pose's tilt disagrees with gravity; see the messages).
+    const std::optional<estimation::InitialAttitude> used = localizer.stats().initial_attitude;
+    extra.Add("initial_attitude",
+              std::string(used && *used == estimation::InitialAttitude::kPose ? "pose" : "gravity"));
+    if (initial.given) extra.Add("initial_attitude_requested", attitude);
     outputs.extras.emplace_back("localize", extra);
     return WriteRunOutputs(outputs);
   } catch (const Error& e) {

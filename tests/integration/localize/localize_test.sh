@@ -20,7 +20,8 @@ case $case_name in
     code=$(run localize --map "$work/data/world_map.pcd" --platform "$platform" --data "$work/data" \
                --out "$work/out" --quiet "${extra[@]}")
     [ "$code" = 0 ] || fail "localize exit $code"
-    expect "^initial pose \(groundtruth\): 2 0 1.5 0 0 0 1, attitude from the pose, accelerometer bias from the static start$"
+    expect "^initial pose \(groundtruth\): 2 0 1.5 0 0 0 1, attitude: pose \(accelerometer bias from the static start\)$"
+    grep -q '"initial_attitude": "pose"' "$work/out/run.json" || fail "run.json: initial_attitude is not pose"
     for f in trajectory.tum run.json metrics.json report.html; do [ -s "$work/out/$f" ] || fail "no $f"; done
     pos=$(json_number "$work/out/run.json" position_rmse_m)
     rot=$(json_number "$work/out/run.json" rotation_rmse_deg)
@@ -37,10 +38,17 @@ case $case_name in
     code=$(run localize --map "$work/data/world_map.pcd" --platform "$hokuyo" --data "$work/data" --out "$work/out" \
                --quiet --initial-pose "2 0 1.5 0 0.05 0 1" --initial-attitude pose)
     [ "$code" = 0 ] || fail "localize exit $code"
-    expect "attitude from the pose, accelerometer bias from the static start$"
+    expect "attitude: pose \(accelerometer bias from the static start\)$"
     grep -q '"initial pose: its tilt disagrees with gravity (implied accelerometer bias 1.0[0-9]* m/s^2): roll and pitch from gravity instead"' \
       "$work/out/run.json" || fail "run.json lacks the fallback message"
-    grep -q '"initial_attitude": "pose"' "$work/out/run.json" || fail "run.json lacks initial_attitude" ;;
+    grep -q '"initial_attitude": "gravity"' "$work/out/run.json" || fail "run.json: initial_attitude is not gravity"
+    grep -q '"initial_attitude_requested": "pose"' "$work/out/run.json" || fail "run.json: no requested attitude" ;;
+  bt_with_resolution)
+    mkdir -p "$work/data"; : >"$work/map.bt"
+    code=$(run localize --map "$work/map.bt" --platform "$hokuyo" --data "$work/data" --out "$work/out" \
+               --map-resolution-m 0.05)
+    [ "$code" = 2 ] || fail "exit $code, expected 2"
+    expect "^error: --map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution" ;;
   missing_map)
     mkdir -p "$work/data"
     code=$(run localize --map "$work/no_such_map.pcd" --platform "$hokuyo" --data "$work/data" --out "$work/out")

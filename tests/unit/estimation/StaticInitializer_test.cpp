@@ -71,9 +71,11 @@ TEST(PlaceAtPose, PoseAttitudeRecoversTheAccelerometerBias) {
   // Gravity alignment alone is off by the bias over g (about 0.3 deg here).
   EXPECT_GT(LogQ(start.alignment.q_world_body.conjugate() * start.q).tail<2>().norm(), 0.004);
   NavState state;
-  std::string note;
-  PlaceAtPose(start.alignment, Pose(start.q, start.p), true, 9.81, 0.3, &state, &note);
-  EXPECT_TRUE(note.empty()) << note;
+  const PoseStart placed =
+      PlaceAtPose(start.alignment, Pose(start.q, start.p), InitialAttitude::kPose, 9.81, 0.3, &state);
+  EXPECT_EQ(placed.attitude, InitialAttitude::kPose);
+  EXPECT_FALSE(placed.fell_back);
+  EXPECT_TRUE(placed.note.empty()) << placed.note;
   EXPECT_TRUE(state.p_world_body_m.isApprox(start.p, 1e-12));
   EXPECT_LT(LogQ(state.q_world_body.conjugate() * start.q).norm(), 1e-12);
   EXPECT_LT((state.accel_bias_m_s2 - start.ba).norm(), 1e-9);
@@ -82,9 +84,10 @@ TEST(PlaceAtPose, PoseAttitudeRecoversTheAccelerometerBias) {
 TEST(PlaceAtPose, GravityAttitudeKeepsHeadingOfThePoseAndTiltOfGravity) {
   const BiasedStart start;
   NavState state;
-  std::string note;
-  PlaceAtPose(start.alignment, Pose(start.q, start.p), false, 9.81, 0.3, &state, &note);
-  EXPECT_TRUE(note.empty());
+  const PoseStart placed =
+      PlaceAtPose(start.alignment, Pose(start.q, start.p), InitialAttitude::kGravity, 9.81, 0.3, &state);
+  EXPECT_EQ(placed.attitude, InitialAttitude::kGravity);
+  EXPECT_FALSE(placed.fell_back);
   EXPECT_TRUE(state.accel_bias_m_s2.isZero());
   // Up as gravity says (the biased specific force), heading as the pose says.
   const Eigen::Vector3d up_body = state.q_world_body.conjugate() * Eigen::Vector3d::UnitZ();
@@ -101,9 +104,10 @@ TEST(PlaceAtPose, AWrongTiltFallsBackToGravityWithANote) {
   const Eigen::Quaterniond tilted = level * Eigen::AngleAxisd(0.035, Eigen::Vector3d::UnitX());
   const StaticAlignment alignment = AlignFromStatic(StaticSamples(tilted, Eigen::Vector3d::Zero(), 0.0, 400), {});
   NavState state;
-  std::string note;
-  PlaceAtPose(alignment, Pose(level, start.p), true, 9.81, 0.3, &state, &note);
-  EXPECT_NE(note.find("disagrees with gravity"), std::string::npos) << note;
+  const PoseStart placed = PlaceAtPose(alignment, Pose(level, start.p), InitialAttitude::kPose, 9.81, 0.3, &state);
+  EXPECT_EQ(placed.attitude, InitialAttitude::kGravity);
+  EXPECT_TRUE(placed.fell_back);
+  EXPECT_NE(placed.note.find("disagrees with gravity"), std::string::npos) << placed.note;
   EXPECT_TRUE(state.accel_bias_m_s2.isZero());
   EXPECT_LT(LogQ(state.q_world_body.conjugate() * tilted).norm(), 1e-9);
 }
@@ -113,8 +117,9 @@ TEST(PlaceAtPose, WithoutAlignmentTakesThePoseAsIs) {
   StaticAlignment failed;
   failed.reason = "too few samples";
   NavState state;
-  std::string note;
-  PlaceAtPose(failed, Pose(start.q, start.p), false, 9.81, 0.3, &state, &note);
+  const PoseStart placed =
+      PlaceAtPose(failed, Pose(start.q, start.p), InitialAttitude::kGravity, 9.81, 0.3, &state);
+  EXPECT_EQ(placed.attitude, InitialAttitude::kPose);
   EXPECT_LT(LogQ(state.q_world_body.conjugate() * start.q).norm(), 1e-12);
   EXPECT_TRUE(state.p_world_body_m.isApprox(start.p, 1e-12));
   EXPECT_TRUE(state.accel_bias_m_s2.isZero());

@@ -273,8 +273,13 @@ TEST(DistanceMap, SensorMovesInsideTheBoxKeepTheField) {
   const std::uint64_t rebuilds = map->Stats().rebuilds;
   map->UpdateSensorPosition(V3(4.0f, 0.0f, 0.5f));  // beyond the recentring distance
   map->WaitForUpdates();
-  EXPECT_NE(map->Snapshot().get(), first.get());
+  const std::shared_ptr<const DistanceField> moved = map->Snapshot();
+  EXPECT_NE(moved.get(), first.get());
   EXPECT_EQ(map->Stats().rebuilds, rebuilds + 1);
+  // An explicit centre always recentres: a new field even at the same place.
+  map->SetCenter(V3(4.0f, 0.0f, 0.5f));
+  map->WaitForUpdates();
+  EXPECT_NE(map->Snapshot().get(), moved.get());
 }
 
 TEST(DistanceMap, PriorMapFromPointsOctreeAndBtFile) {

@@ -1,4 +1,4 @@
-#include "map/WholeMapBox.hpp"
+#include "map/WholeMapOptions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,9 @@ namespace {
 std::vector<Eigen::Vector3f> LongFloor() {
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i <= 1200; ++i) {
-    for (int j = -40; j <= 40; ++j) points.emplace_back(0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 0.0f);
+    for (int j = -40; j <= 40; ++j) {
+      points.emplace_back(0.05f * static_cast<float>(i), 0.05f * static_cast<float>(j), 0.0f);
+    }
   }
   return points;
 }
@@ -47,10 +49,20 @@ TEST(WholeMapOptions, OneFixedBoxReachesEveryPoint) {
 
 TEST(WholeMapOptions, RefusesMapsOverTheCellBudgetAndEmptyInput) {
   DistanceMapOptions small = Options();
-  small.max_edt_cells = 100000;  // 60 m x 4 m x 1 m needs ~300k cells at 0.1 m
+  small.max_edt_cells = 100000;  // 60 m x 4 m x 1 m plus the clamp needs ~380k cells at 0.1 m
   EXPECT_FALSE(WholeMapOptions(LongFloor(), small, Eigen::Vector3f::Zero()).has_value());
   EXPECT_FALSE(WholeMapOptions({}, Options(), Eigen::Vector3f::Zero()).has_value());
   EXPECT_FALSE(WholeMapOptions(LongFloor(), Options(), Eigen::Vector3f::Constant(NAN)).has_value());
+}
+
+TEST(WholeMapOptions, RefusesABoxBeyondTheOctreeKeyRange) {
+  // At 0.1 m the octree's keys reach +-3276.7 m; the centre plus the box's
+  // reach (about 59 m here) must stay inside.
+  std::vector<Eigen::Vector3f> far = LongFloor();
+  for (Eigen::Vector3f& p : far) p.x() += 3150.0f;
+  EXPECT_TRUE(WholeMapOptions(far, Options(), Eigen::Vector3f(3152.0f, 0.0f, 1.0f)).has_value());
+  for (Eigen::Vector3f& p : far) p.x() += 100.0f;
+  EXPECT_FALSE(WholeMapOptions(far, Options(), Eigen::Vector3f(3252.0f, 0.0f, 1.0f)).has_value());
 }
 
 }  // namespace
