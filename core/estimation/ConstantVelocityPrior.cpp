@@ -31,10 +31,7 @@ MotionPrediction ConstantVelocityPrior::Predict(double t0, double t1) const {
   out.ok = true;
   out.T_prev_next.linear() = ExpQ(rate_body_rad_s_ * dt).toRotationMatrix();
   out.T_prev_next.translation() = velocity_body_m_s_ * dt;
-  const double sigma_p = options_.velocity_sigma_m_s * dt;
-  const double sigma_r = options_.rate_sigma_rad_s * dt;
-  out.covariance.diagonal() << Eigen::Vector3d::Constant(sigma_p * sigma_p),
-      Eigen::Vector3d::Constant(sigma_r * sigma_r);
+  out.covariance = UnmodelledMotionCovariance(options_, dt);
   return out;
 }
 

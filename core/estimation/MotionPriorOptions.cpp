@@ -25,6 +25,14 @@ bool MotionPriorOptions::IsValid(std::string* why) const {
   return true;
 }
 
+Eigen::Matrix<double, 6, 6> UnmodelledMotionCovariance(const MotionPriorOptions& options, double dt) {
+  const double sigma_p = options.velocity_sigma_m_s * dt;
+  const double sigma_r = options.rate_sigma_rad_s * dt;
+  Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();
+  covariance.diagonal() << Eigen::Vector3d::Constant(sigma_p * sigma_p), Eigen::Vector3d::Constant(sigma_r * sigma_r);
+  return covariance;
+}
+
 bool ParseMotionSource(const std::string& text, MotionSource* source) {
   if (text == "imu") {
     *source = MotionSource::kImu;

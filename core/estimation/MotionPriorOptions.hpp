@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 
+#include <Eigen/Core>
+
 namespace unimap::estimation {
 
 // Where the localiser's prediction between scans comes from.
@@ -25,6 +27,10 @@ struct MotionPriorOptions {
   // True when every field is in range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const;
 };
+
+// Covariance of [dp, dtheta] after dt seconds of motion unmodelled at the
+// constant-velocity sigmas: diag((velocity_sigma_m_s dt)^2 x3, (rate_sigma_rad_s dt)^2 x3).
+Eigen::Matrix<double, 6, 6> UnmodelledMotionCovariance(const MotionPriorOptions& options, double dt);
 
 // "imu", "odometry", "constant-velocity"; false for anything else.
 bool ParseMotionSource(const std::string& text, MotionSource* source);

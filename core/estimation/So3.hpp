@@ -45,4 +45,15 @@ inline Eigen::Isometry3d ApplyPoseError(const Eigen::Isometry3d& T, const Eigen:
   return out;
 }
 
+// The pose a fraction s of the way from a to b: position linearly
+// interpolated, rotation slerped along the shorter arc.
+inline Eigen::Isometry3d InterpolatePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double s) {
+  const Eigen::Quaterniond qa(a.linear());
+  const Eigen::Quaterniond qb(b.linear());
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = (1.0 - s) * a.translation() + s * b.translation();
+  T.linear() = qa.slerp(s, qb).normalized().toRotationMatrix();
+  return T;
+}
+
 }  // namespace unimap::estimation

@@ -40,11 +40,7 @@ bool WheelOdometryPrior::Interpolate(double time_s, Eigen::Isometry3d* T_odom_bo
   const OdometrySample& a = *(hi - 1);
   if (b.time_s - a.time_s > options_.max_odometry_gap_s) return false;
   const double f = (time_s - a.time_s) / (b.time_s - a.time_s);
-  const Eigen::Quaterniond qa(a.T_odom_body.linear());
-  const Eigen::Quaterniond qb(b.T_odom_body.linear());
-  T_odom_body->setIdentity();
-  T_odom_body->linear() = qa.slerp(f, qb).toRotationMatrix();
-  T_odom_body->translation() = (1.0 - f) * a.T_odom_body.translation() + f * b.T_odom_body.translation();
+  *T_odom_body = InterpolatePose(a.T_odom_body, b.T_odom_body, f);
   return true;
 }
 

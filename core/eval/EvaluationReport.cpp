@@ -11,7 +11,8 @@ namespace unimap::eval {
 
 std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluation& evaluation,
                                                          const ReportSources& sources,
-                                                         const std::filesystem::path& out_dir) {
+                                                         const std::filesystem::path& out_dir,
+                                                         const ReportExtras& extras) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw Error("cannot create output folder " + out_dir.string() + ": " + ec.message());
@@ -21,10 +22,10 @@ std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluat
     WriteFileAtomically(file, bytes);
     written.push_back(file);
   };
-  write("metrics.json", MetricsToJson(evaluation.metrics));
+  write("metrics.json", MetricsToJson(evaluation.metrics, extras.metrics));
   const std::vector<Figure> figures = RenderTrajectoryFigures(evaluation);
   for (const Figure& figure : figures) write(figure.file_name, figure.png);
-  write("report.html", RenderHtmlReport(evaluation.metrics, figures, sources));
+  write("report.html", RenderHtmlReport(evaluation.metrics, figures, sources, extras));
   return written;
 }
 

@@ -12,8 +12,11 @@ namespace unimap::eval {
 // trajectory_side.png, position_error.png, rotation_error.png and
 // report.html there, each atomically (temp file + rename). Returns the paths
 // written, in that order. Throws unimap::Error when a file cannot be written.
+// extras: what the report shows beyond the trajectory (e.g. the map error;
+// its metrics also go to metrics.json).
 std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluation& evaluation,
                                                          const ReportSources& sources,
-                                                         const std::filesystem::path& out_dir);
+                                                         const std::filesystem::path& out_dir,
+                                                         const ReportExtras& extras = {});
 
 }  // namespace unimap::eval

@@ -22,7 +22,7 @@ std::string EscapeHtml(const std::string& text) {
 }
 
 std::string RenderHtmlReport(const TrajectoryMetrics& metrics, const std::vector<Figure>& figures,
-                             const ReportSources& sources) {
+                             const ReportSources& sources, const ReportExtras& extras) {
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>unimap trajectory evaluation</title>\n<style>\n"
@@ -36,11 +36,21 @@ std::string RenderHtmlReport(const TrajectoryMetrics& metrics, const std::vector
           EscapeHtml(sources.truth_file) + "</code></p>\n";
   html += "<p>Definitions: docs/evaluation.md. Full-precision values: metrics.json.</p>\n";
   html += "<table>\n<tr><th>key</th><th>value</th><th>meaning</th></tr>\n";
-  for (const MetricRow& row : DescribeMetrics(metrics)) {
+  std::vector<MetricRow> rows = DescribeMetrics(metrics);
+  for (const ExtraMetric& m : extras.metrics) rows.push_back(m.row);
+  for (const MetricRow& row : rows) {
     html += "<tr><td><code>" + EscapeHtml(row.key) + "</code></td><td class=\"v\">" + EscapeHtml(row.value) +
             "</td><td>" + EscapeHtml(row.meaning) + "</td></tr>\n";
   }
   html += "</table>\n";
+  if (!extras.sources.empty()) {
+    html += "<p>";
+    for (std::size_t i = 0; i < extras.sources.size(); ++i) {
+      if (i > 0) html += "<br>\n";
+      html += EscapeHtml(extras.sources[i].first) + ": <code>" + EscapeHtml(extras.sources[i].second) + "</code>";
+    }
+    html += "</p>\n";
+  }
   for (const Figure& figure : figures) {
     html += "<h2>" + EscapeHtml(figure.file_name) + "</h2>\n<p>" + EscapeHtml(figure.caption) + "</p>\n";
     html += "<img alt=\"" + EscapeHtml(figure.file_name) + "\" src=\"data:image/png;base64," +

@@ -14,6 +14,13 @@ struct MetricRow {
   std::string meaning;  // one-line definition with unit
 };
 
+// A metric beyond the trajectory's (e.g. the map error): its metrics.json
+// value and its displayed row.
+struct ExtraMetric {
+  std::string json;  // full-precision JSON value (a number, or null)
+  MetricRow row;     // key, display value, meaning
+};
+
 // Rows for every metrics.json key, in the same order, values rounded for
 // display (4 significant decimals; the JSON keeps full precision).
 std::vector<MetricRow> DescribeMetrics(const TrajectoryMetrics& metrics);

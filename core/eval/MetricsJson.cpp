@@ -54,12 +54,14 @@ std::string JsonNumber(double value) {
   return std::string(buffer, result.ptr);
 }
 
-std::string MetricsToJson(const TrajectoryMetrics& metrics) {
+std::string MetricsToJson(const TrajectoryMetrics& metrics, const std::vector<ExtraMetric>& extra) {
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& field : Fields()) entries.emplace_back(field.first, field.second(metrics));
+  for (const ExtraMetric& m : extra) entries.emplace_back(m.row.key, m.json);
   std::string json = "{\n";
-  const auto& fields = Fields();
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    json += "  \"" + fields[i].first + "\": " + fields[i].second(metrics);
-    json += i + 1 < fields.size() ? ",\n" : "\n";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    json += "  \"" + entries[i].first + "\": " + entries[i].second;
+    json += i + 1 < entries.size() ? ",\n" : "\n";
   }
   return json + "}\n";
 }

@@ -3,13 +3,15 @@
 #include <string>
 #include <vector>
 
+#include "eval/MetricRows.hpp"
 #include "eval/TrajectoryMetrics.hpp"
 
 namespace unimap::eval {
 
 // The JSON text (keys = TrajectoryMetrics field names, vectors as [x, y, z]
-// arrays, numbers in shortest round-trip form, empty optionals as null).
-std::string MetricsToJson(const TrajectoryMetrics& metrics);
+// arrays, numbers in shortest round-trip form, empty optionals as null),
+// then the extra metrics' keys in order.
+std::string MetricsToJson(const TrajectoryMetrics& metrics, const std::vector<ExtraMetric>& extra = {});
 
 // Every key MetricsToJson writes, in output order.
 std::vector<std::string> MetricsJsonKeys();

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "estimation/So3.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::eval {
@@ -44,13 +45,7 @@ Eigen::Isometry3d InterpolatePose(const StampedPose& a, const StampedPose& b, do
   const double span = b.time_s - a.time_s;
   const double s = span > 0.0 ? (time_s - a.time_s) / span : 0.0;
   if (s == 0.0) return a.T_map_body;
-  const Eigen::Quaterniond qa(a.T_map_body.linear());
-  const Eigen::Quaterniond qb(b.T_map_body.linear());
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  // p(s) = (1 - s) p_a + s p_b;  q(s) = slerp(q_a, q_b, s) (shorter arc).
-  T.translation() = (1.0 - s) * a.T_map_body.translation() + s * b.T_map_body.translation();
-  T.linear() = qa.slerp(s, qb).normalized().toRotationMatrix();
-  return T;
+  return estimation::InterpolatePose(a.T_map_body, b.T_map_body, s);
 }
 
 TrajectoryAssociation AssociateTrajectories(const std::vector<StampedPose>& estimate,

@@ -8,14 +8,19 @@
 namespace unimap::graph {
 namespace {
 
+// Every node's pose, in node order.
+std::vector<Eigen::Isometry3d> AllPoses(const PoseGraph& graph) {
+  std::vector<Eigen::Isometry3d> poses;
+  poses.reserve(graph.NodeCount());
+  for (std::size_t i = 0; i < graph.NodeCount(); ++i) poses.push_back(graph.Pose(static_cast<int>(i)));
+  return poses;
+}
+
 // The default solve step: optimise the copy, report every node's pose.
 OptimizedPoses OptimizeCopy(PoseGraph& graph, const PoseGraphOptions& options) {
   OptimizedPoses out;
   out.summary = graph.Optimize(options);
-  out.T_world_node.reserve(graph.NodeCount());
-  for (std::size_t i = 0; i < graph.NodeCount(); ++i) {
-    out.T_world_node.push_back(graph.Pose(static_cast<int>(i)));
-  }
+  out.T_world_node = AllPoses(graph);
   return out;
 }
 
@@ -26,9 +31,7 @@ OptimizedPoses FailedResult(const PoseGraph& graph, const std::string& reason) {
   out.summary.reason = reason;
   out.summary.nodes = graph.NodeCount();
   out.summary.constraints = graph.ConstraintCount();
-  for (std::size_t i = 0; i < graph.NodeCount(); ++i) {
-    out.T_world_node.push_back(graph.Pose(static_cast<int>(i)));
-  }
+  out.T_world_node = AllPoses(graph);
   return out;
 }
 

@@ -117,11 +117,11 @@ LoopClosureResult LoopClosureMatcher::Match(const std::vector<Eigen::Vector3f>& 
   // points only A explains against those only B explains (the points both
   // or neither explain tell them apart no better), each as a fraction of
   // the points plus ambiguity_floor.
-  const std::vector<std::uint8_t> best_inliers = refiner.InlierMask(refine_points, best.T_submap_body);
+  const std::vector<std::uint8_t>& best_inliers = best.inlier_mask;
   const double n = static_cast<double>(refine_points.size());
   for (std::size_t i = 1; i < refined.size(); ++i) {
     if (!Distinct(refined[i].T_submap_body, best.T_submap_body, options_)) continue;
-    const std::vector<std::uint8_t> inliers = refiner.InlierMask(refine_points, refined[i].T_submap_body);
+    const std::vector<std::uint8_t>& inliers = refined[i].inlier_mask;
     int only_best = 0;
     int only_alternative = 0;
     for (std::size_t k = 0; k < best_inliers.size(); ++k) {

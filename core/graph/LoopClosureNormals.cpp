@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "matching/VoxelDownsampler.hpp"
+
 namespace unimap::graph {
 
 namespace {
@@ -17,12 +19,6 @@ struct Moments {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
 };
-
-std::uint64_t Key(int x, int y, int z) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x) & 0x1FFFFF) << 42) |
-         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y) & 0x1FFFFF) << 21) |
-         static_cast<std::uint64_t>(static_cast<std::uint32_t>(z) & 0x1FFFFF);
-}
 
 }  // namespace
 
@@ -41,7 +37,7 @@ std::vector<Eigen::Vector3f> LoopClosureNormals(const std::vector<Eigen::Vector3
     cells[i] = Eigen::Vector3i(static_cast<int>(std::floor(p.x() * inverse)),
                                static_cast<int>(std::floor(p.y() * inverse)),
                                static_cast<int>(std::floor(p.z() * inverse)));
-    keys[i] = Key(cells[i].x(), cells[i].y(), cells[i].z());
+    keys[i] = matching::VoxelCellKey(cells[i]);
     Moments& m = cubes[keys[i]];
     m.count += 1.0;
     m.sum += p;
@@ -56,7 +52,7 @@ std::vector<Eigen::Vector3f> LoopClosureNormals(const std::vector<Eigen::Vector3
     for (int dx = -1; dx <= 1; ++dx) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cubes.find(Key(cells[i].x() + dx, cells[i].y() + dy, cells[i].z() + dz));
+          const auto it = cubes.find(matching::VoxelCellKey(cells[i] + Eigen::Vector3i(dx, dy, dz)));
           if (it == cubes.end()) continue;
           pooled.count += it->second.count;
           pooled.sum += it->second.sum;

@@ -6,6 +6,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "estimation/So3.hpp"
+
 namespace unimap::graph {
 
 namespace {
@@ -15,16 +17,6 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 // Huber's rho(d) with threshold delta.
 double Huber(double d, double delta) { return d <= delta ? 0.5 * d * d : delta * (d - 0.5 * delta); }
-
-// Pose T perturbed by [dp, dtheta]: (R Exp(dtheta), t + dp).
-Eigen::Isometry3d Perturb(const Eigen::Isometry3d& T, const Vector6d& delta) {
-  Eigen::Isometry3d out = T;
-  out.translation() += delta.head<3>();
-  const Eigen::Vector3d dtheta = delta.tail<3>();
-  const double angle = dtheta.norm();
-  if (angle > 0.0) out.linear() = T.linear() * Eigen::AngleAxisd(angle, dtheta / angle).toRotationMatrix();
-  return out;
-}
 
 // Residual of one point x = R p + t against the nearest submap point q of
 // its cell: point-to-plane n . (x - q) when q has a normal (*planar), else
@@ -87,17 +79,6 @@ int Linearise(const LoopClosureDistanceField& field, const std::vector<Eigen::Ve
 LoopClosureRefiner::LoopClosureRefiner(const LoopClosureDistanceField& field, const LoopClosureOptions& options)
     : field_(field), options_(options) {}
 
-std::vector<std::uint8_t> LoopClosureRefiner::InlierMask(const std::vector<Eigen::Vector3f>& points_body,
-                                                          const Eigen::Isometry3d& T_submap_body) const {
-  const Eigen::Matrix3f R = T_submap_body.linear().cast<float>();
-  const Eigen::Vector3f t = T_submap_body.translation().cast<float>();
-  std::vector<std::uint8_t> mask(points_body.size());
-  for (std::size_t i = 0; i < points_body.size(); ++i) {
-    mask[i] = field_.Distance(R * points_body[i] + t, nullptr) <= options_.inlier_distance_m ? 1 : 0;
-  }
-  return mask;
-}
-
 double LoopClosureRefiner::Score(const std::vector<Eigen::Vector3f>& points_body,
                                  const Eigen::Isometry3d& T_submap_body) const {
   if (points_body.empty()) return 0.0;
@@ -131,7 +112,7 @@ LoopClosureRefinement LoopClosureRefiner::Refine(const std::vector<Eigen::Vector
     Matrix6d A = H;
     A.diagonal() = A.diagonal() * (1.0 + lambda) + Vector6d::Constant(1e-9);
     const Vector6d step = A.ldlt().solve(-b);
-    const Eigen::Isometry3d candidate = Perturb(T, step);
+    const Eigen::Isometry3d candidate = estimation::ApplyPoseError(T, step);
     double candidate_cost = 0.0;
     const int used = Linearise(field_, points_body, candidate, delta, &candidate_cost, &candidate_H, &candidate_b);
     if (candidate_cost < cost && used >= 6) {
@@ -157,9 +138,12 @@ LoopClosureRefinement LoopClosureRefiner::Refine(const std::vector<Eigen::Vector
   Matrix6d information = Matrix6d::Zero();
   double sum2 = 0.0;
   int planar_inliers = 0;
-  for (const Eigen::Vector3f& p : points_body) {
+  out.inlier_mask.assign(points_body.size(), 0);
+  for (std::size_t i = 0; i < points_body.size(); ++i) {
+    const Eigen::Vector3f& p = points_body[i];
     const Eigen::Vector3f x = Rf * p + t;
     if (field_.Distance(x, nullptr) > options_.inlier_distance_m) continue;
+    out.inlier_mask[i] = 1;
     ++out.inliers;
     double r = 0.0;
     Vector6d J;

@@ -17,6 +17,7 @@ struct LoopClosureRefinement {
   Eigen::Isometry3d T_submap_body = Eigen::Isometry3d::Identity();  // refined pose
   double score = 0.0;       // fraction of the points within inlier_distance_m of the surface
   int inliers = 0;          // points within inlier_distance_m
+  std::vector<std::uint8_t> inlier_mask;  // per point, 1 when within inlier_distance_m (when ok)
   int iterations = 0;       // Levenberg-Marquardt iterations run
   double rms_m = 0.0;       // RMS plane residual of the inliers with a planar correspondence (m)
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();  // see Refine
@@ -48,9 +49,6 @@ class LoopClosureRefiner {
   // At most max_iterations Levenberg-Marquardt iterations.
   LoopClosureRefinement Refine(const std::vector<Eigen::Vector3f>& points_body, const Eigen::Isometry3d& T_initial,
                                int max_iterations) const;
-  // Per point, 1 when it lies within inlier_distance_m of the surface at T.
-  std::vector<std::uint8_t> InlierMask(const std::vector<Eigen::Vector3f>& points_body,
-                                       const Eigen::Isometry3d& T_submap_body) const;
   // Fraction of the points within inlier_distance_m of the surface at T.
   double Score(const std::vector<Eigen::Vector3f>& points_body, const Eigen::Isometry3d& T_submap_body) const;
 

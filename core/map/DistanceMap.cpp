@@ -206,7 +206,7 @@ void DistanceMap::WorkerLoop() {
     try {
       std::shared_ptr<const DistanceField> field = ProcessBatch(jobs);
       if (hook) hook();
-      Publish(std::move(field));
+      if (field) Publish(std::move(field));  // null: nothing changed, the published field stays
     } catch (const std::exception&) {
       {
         std::lock_guard<std::mutex> lock(octree_mutex_);
@@ -233,18 +233,18 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   const Clock::time_point start = Clock::now();
   KeyBox endpoints;
   bool recentre = false;
-  bool inserted_any = false;  // or distances enabled: the field may change
+  bool changed = false;  // points inserted or distances enabled: the field may change
   DistanceMapStats counts;
   for (Job& job : jobs) {
     if (job.enable_distances) {
       recentre = recentre || (!distances_on_ && has_centre_);
       distances_on_ = true;
-      inserted_any = true;
+      changed = true;
       continue;
     }
     if (!job.points_map.empty()) {
       endpoints.Extend(tree_->Insert(job.points_map, job.sensor_map));
-      inserted_any = true;
+      changed = true;
       ++counts.scans_inserted;
       counts.points_inserted += job.points_map.size();
     }
@@ -258,10 +258,10 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   }
   sequence_ += jobs.size();
   const Clock::time_point inserted = Clock::now();
-  if (!inserted_any && !recentre && last_field_ != nullptr) {
+  if (!changed && !recentre) {
     // Only sensor positions inside the current box (e.g. localisation in a
     // fixed map): nothing can have changed, the last field stays published.
-    return last_field_;
+    return nullptr;
   }
 
   bool rebuilt = false;
@@ -294,7 +294,6 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
           : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m),
                                                   sequence_);
   const Clock::time_point exported = Clock::now();
-  last_field_ = field;
 
   std::lock_guard<std::mutex> stats_lock(stats_mutex_);
   stats_.scans_inserted += counts.scans_inserted;

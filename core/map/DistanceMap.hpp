@@ -110,7 +110,8 @@ class DistanceMap : public ScanMap {
   void CheckPosition(const Eigen::Vector3f& p_map, const char* what) const;
   void Enqueue(Job job);
   void WorkerLoop();
-  // Integrates jobs into the octree and the EDT; returns the field to publish.
+  // Integrates jobs into the octree and the EDT; returns the field to publish
+  // (null when the batch only moved the sensor inside the box).
   std::shared_ptr<const DistanceField> ProcessBatch(std::vector<Job>& jobs);
   // Rebuilds the EDT over the current sensor box; returns false when empty.
   bool RebuildRegion();
@@ -133,7 +134,6 @@ class DistanceMap : public ScanMap {
 
   mutable std::mutex snapshot_mutex_;  // held only to copy the pointer
   std::shared_ptr<const DistanceField> snapshot_;
-  std::shared_ptr<const DistanceField> last_field_;  // worker thread only: the last export
 
   mutable std::mutex stats_mutex_;
   DistanceMapStats stats_;

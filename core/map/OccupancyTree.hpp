@@ -57,7 +57,9 @@ class OccupancyTree {
 
   double resolution_m() const { return resolution_m_; }
   // Coordinates must stay within +- this (16-bit octree keys).
-  double HalfRangeM() const { return 32767.0 * resolution_m_; }
+  double HalfRangeM() const { return HalfRangeM(resolution_m_); }
+  // The same for any resolution.
+  static double HalfRangeM(double resolution_m) { return 32767.0 * resolution_m; }
   octomap::OcTree& tree() { return *tree_; }
   const octomap::OcTree& tree() const { return *tree_; }
   // Sub-voxel surfaces of the occupied voxels; null without

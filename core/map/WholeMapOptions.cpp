@@ -5,6 +5,7 @@
 
 #include "map/FieldBoxPlanner.hpp"
 #include "map/KeyBox.hpp"
+#include "map/OccupancyTree.hpp"
 
 namespace unimap::map {
 namespace {
@@ -38,8 +39,8 @@ std::optional<DistanceMapOptions> WholeMapOptions(const std::vector<Eigen::Vecto
   whole.follow_sensor = false;
   if (!whole.IsValid(nullptr)) return std::nullopt;
   // DistanceMap::CheckPosition's key-range test for the centre.
-  const double half_range_m = 32767.0 * res;
-  if (c.cwiseAbs().maxCoeff() + std::max(whole.max_range_m, whole.max_insert_range_m) >= half_range_m) {
+  if (c.cwiseAbs().maxCoeff() + std::max(whole.max_range_m, whole.max_insert_range_m) >=
+      OccupancyTree::HalfRangeM(res)) {
     return std::nullopt;
   }
   // The planner's own field box for the map's occupied keys (one voxel of

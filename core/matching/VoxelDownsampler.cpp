@@ -9,11 +9,8 @@ namespace unimap::matching {
 namespace {
 
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
-  const auto cell = [&](float v) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv_voxel)) + (1 << 20)) &
-           0x1FFFFF;
-  };
-  return (cell(p.x()) << 42) | (cell(p.y()) << 21) | cell(p.z());
+  const auto cell = [&](float v) { return static_cast<int>(std::floor(v * inv_voxel)); };
+  return VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())));
 }
 
 }  // namespace

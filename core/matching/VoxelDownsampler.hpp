@@ -6,6 +6,15 @@
 
 namespace unimap::matching {
 
+// A 64-bit key of a voxel cell (21 bits per axis, cells within +-2^20 of
+// the origin are distinct): for hashing voxels.
+inline std::uint64_t VoxelCellKey(const Eigen::Vector3i& cell) {
+  const auto bits = [](int v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(v) + (1 << 20)) & 0x1FFFFF;
+  };
+  return (bits(cell.x()) << 42) | (bits(cell.y()) << 21) | bits(cell.z());
+}
+
 // Keeps one point per voxel (the first one seen, so the result is
 // deterministic and a real measurement), then at most max_points of them
 // chosen with a seeded generator (0 = keep all).

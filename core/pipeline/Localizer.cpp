@@ -130,10 +130,10 @@ void Localizer::InitializeWithoutImu(double time_s) {
   history_.Add(time_s, state.T_world_body());
 }
 
-bool Localizer::PredictTo(double t_end) {
+void Localizer::PredictTo(double t_end) {
   if (!prior_) {
     eskf_.PropagateTo(t_end);
-    return true;
+    return;
   }
   estimation::MotionPrediction prediction = prior_->Predict(eskf_.state().time_s, t_end);
   if (!prediction.ok) {
@@ -142,16 +142,10 @@ bool Localizer::PredictTo(double t_end) {
     // the match can still find it; counted, not skipped.
     Skip(&stats_.scans_no_motion, "scan ending at " + std::to_string(t_end) + " s: " + prediction.reason +
                                       "; pose held with a wide prior");
-    const double dt = t_end - eskf_.state().time_s;
-    const double sigma_p = options_.motion.velocity_sigma_m_s * dt;
-    const double sigma_r = options_.motion.rate_sigma_rad_s * dt;
     prediction.T_prev_next.setIdentity();
-    prediction.covariance.setZero();
-    prediction.covariance.diagonal() << Eigen::Vector3d::Constant(sigma_p * sigma_p),
-        Eigen::Vector3d::Constant(sigma_r * sigma_r);
+    prediction.covariance = estimation::UnmodelledMotionCovariance(options_.motion, t_end - eskf_.state().time_s);
   }
   eskf_.PredictPose(t_end, prediction.T_prev_next, prediction.covariance);
-  return true;
 }
 
 std::vector<ScanPose> Localizer::TakePoses() {
@@ -241,7 +235,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     raw = std::get<RawScan>(scan);
   }
   if (eskf_.state().time_s < t_end) {
-    if (!PredictTo(t_end)) return;
+    PredictTo(t_end);
     history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
   BodyScan body;

@@ -87,8 +87,6 @@ class Localizer : public EventSink {
   std::size_t ScansReceived() const override { return stats_.scans; }
   const LocalizerStats& stats() const { return stats_; }
   bool initialized() const { return eskf_.initialized(); }
-  // Position and attitude uncertainty of the current estimate ([dp, dtheta]).
-  Eigen::Matrix<double, 6, 6> PoseCovariance() const { return eskf_.PoseCovariance(); }
 
  private:
   // The constructors above delegate here.
@@ -99,7 +97,7 @@ class Localizer : public EventSink {
   void InitializeWithoutImu(double time_s);
   // Predicts the state to t_end (IMU or motion prior; without an increment
   // the pose is held with a wide prior and the scan counted in scans_no_motion).
-  bool PredictTo(double t_end);
+  void PredictTo(double t_end);
   void ProcessReadyScans(bool finishing);
   void ProcessScan(const io::ScanRecord& scan);
   void Skip(std::size_t* counter, const std::string& message);

@@ -90,10 +90,6 @@ void TrajectoryGraph::ApplyOptimized(const std::vector<Eigen::Isometry3d>& T_wor
   }
 }
 
-const Eigen::Isometry3d& TrajectoryGraph::T_local_key(int key_scan) const {
-  return key_scans_.at(static_cast<std::size_t>(key_scan)).T_local_body;
-}
-
 Eigen::Isometry3d TrajectoryGraph::T_world_key(int key_scan) const {
   return graph_.Pose(key_scans_.at(static_cast<std::size_t>(key_scan)).node);
 }

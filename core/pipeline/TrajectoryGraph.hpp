@@ -41,9 +41,7 @@ class TrajectoryGraph {
 
   const graph::PoseGraph& graph() const { return graph_; }
   std::size_t key_scan_count() const { return key_scans_.size(); }
-  double key_scan_time(int key_scan) const { return key_scans_[static_cast<std::size_t>(key_scan)].time_s; }
-  // The key scan's body pose in the local frame (as localised) and in the world (optimised).
-  const Eigen::Isometry3d& T_local_key(int key_scan) const;
+  // The key scan's body pose in the world (optimised).
   Eigen::Isometry3d T_world_key(int key_scan) const;
   // A submap's optimised frame; false when the id has no node.
   bool T_world_submap(int submap_id, Eigen::Isometry3d* T_world_submap) const;

@@ -98,8 +98,8 @@ int RunEvaluate(const EvaluateOptions& options) {
     }
     table.Print(std::cout);
     const std::vector<std::filesystem::path> written =
-        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir);
-    if (map_evaluation) AddMapEvaluationToReport(*map_evaluation, out_dir);
+        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir,
+                                    map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{});
     std::cout << "\nwrote:\n";
     for (const auto& file : written) std::cout << "  " << file.string() << '\n';
     return 0;

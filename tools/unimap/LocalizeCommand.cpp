@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "Commands.hpp"
+#include "MapEvaluation.hpp"
 #include "RunOutputs.hpp"
 #include "io/DatasetReader.hpp"
-#include "io/PcdPointLoader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "map/DistanceMap.hpp"
 #include "map/WholeMapOptions.hpp"
@@ -122,13 +122,10 @@ std::unique_ptr<map::DistanceMap> LoadMap(const std::filesystem::path& file, con
     *points = 0;
     return map::DistanceMap::LoadBt(file, options, centre_map);
   }
-  std::vector<Eigen::Vector4f> xyzi;
-  io::LoadPcdXyzi(file, &xyzi);
-  std::vector<Eigen::Vector3f> points_map;
-  points_map.reserve(xyzi.size());
-  for (const Eigen::Vector4f& p : xyzi) {
-    if (p.head<3>().allFinite()) points_map.push_back(p.head<3>());
-  }
+  std::vector<Eigen::Vector3f> points_map = LoadMapPoints(file);
+  points_map.erase(std::remove_if(points_map.begin(), points_map.end(),
+                                  [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
+                   points_map.end());
   if (points_map.empty()) throw InputError("map '" + file.string() + "': no finite points");
   *points = points_map.size();
   // A map that fits the cell budget gets one fixed distance box, computed
@@ -183,10 +180,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
           std::max(localizer_options.gpf.clamp_distance_m, localizer_options.map.resolution_m);
     }
     io::DatasetReader reader(options.data_dir);
-    if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
-      std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
-                << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
-    }
+    WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
     const InitialPose initial = ChooseInitialPose(options, reader);
     const std::string attitude = !options.initial_attitude.empty() ? options.initial_attitude
                                  : initial.source == "groundtruth"    ? "pose"

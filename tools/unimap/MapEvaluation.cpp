@@ -2,15 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
 #include "TextFormat.hpp"
 #include "WorldLoader.hpp"
-#include "eval/AtomicFile.hpp"
-#include "eval/HtmlReport.hpp"
 #include "eval/MetricsJson.hpp"
 #include "io/PcdPointLoader.hpp"
 #include "io/PlyReader.hpp"
@@ -23,14 +19,6 @@ std::string Lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
-}
-
-std::string ReadWholeFile(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(file.string() + ": cannot read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // (key, full-precision JSON value, display value, meaning) of every map metric.
@@ -129,54 +117,17 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
   return result;
 }
 
-std::vector<std::string> MapEvaluationJsonKeys() {
-  std::vector<std::string> keys;
-  for (const MapMetric& m : Metrics(MapEvaluation{})) keys.push_back(m.key);
-  return keys;
+eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation) {
+  eval::ReportExtras extras;
+  for (const MapMetric& m : Metrics(evaluation)) extras.metrics.push_back({m.json, {m.key, m.shown, m.meaning}});
+  extras.sources = {{"Map", evaluation.map_file.string()}, {"World (true surfaces)", evaluation.world_file.string()}};
+  return extras;
 }
 
 std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation) {
   std::vector<eval::MetricRow> rows;
-  for (const MapMetric& m : Metrics(evaluation)) rows.push_back({m.key, m.shown, m.meaning});
+  for (const eval::ExtraMetric& m : MapReportExtras(evaluation).metrics) rows.push_back(m.row);
   return rows;
-}
-
-void AddMapEvaluationToReport(const MapEvaluation& evaluation, const std::filesystem::path& out_dir) {
-  const std::vector<MapMetric> metrics = Metrics(evaluation);
-
-  // metrics.json: one flat object; the keys go before its closing brace.
-  const std::filesystem::path json_file = out_dir / "metrics.json";
-  std::string json = ReadWholeFile(json_file);
-  const std::size_t close = json.rfind('}');
-  const std::size_t last = close == std::string::npos || close == 0 ? std::string::npos
-                                                                     : json.find_last_not_of(" \n", close - 1);
-  if (last == std::string::npos || json[last] == '{' || json.front() != '{') {
-    throw Error(json_file.string() + ": not a metrics object written by unimap evaluate");
-  }
-  if (json.find("\"" + metrics.front().key + "\"") != std::string::npos) {
-    throw Error(json_file.string() + ": already holds the map metrics");
-  }
-  std::string added;
-  for (const MapMetric& m : metrics) added += ",\n  \"" + m.key + "\": " + m.json;
-  json.insert(last + 1, added);
-  eval::WriteFileAtomically(json_file, json);
-
-  // report.html: rows at the end of the metrics table, the sources below it.
-  const std::filesystem::path html_file = out_dir / "report.html";
-  std::string html = ReadWholeFile(html_file);
-  const std::string table_end = "</table>\n";
-  const std::size_t at = html.find(table_end);
-  if (at == std::string::npos) throw Error(html_file.string() + ": no metrics table");
-  std::string rows;
-  for (const MapMetric& m : metrics) {
-    rows += "<tr><td><code>" + eval::EscapeHtml(m.key) + "</code></td><td class=\"v\">" +
-            eval::EscapeHtml(m.shown) + "</td><td>" + eval::EscapeHtml(m.meaning) + "</td></tr>\n";
-  }
-  rows += table_end + "<p>Map: <code>" + eval::EscapeHtml(evaluation.map_file.string()) +
-          "</code><br>\nWorld (true surfaces): <code>" + eval::EscapeHtml(evaluation.world_file.string()) +
-          "</code></p>\n";
-  html.replace(at, table_end.size(), rows);
-  eval::WriteFileAtomically(html_file, html);
 }
 
 }  // namespace unimap::cli

@@ -11,6 +11,7 @@
 
 #include "World.hpp"
 #include "eval/MapError.hpp"
+#include "eval/HtmlReport.hpp"
 #include "eval/MetricRows.hpp"
 
 namespace unimap::cli {
@@ -50,21 +51,15 @@ std::optional<std::filesystem::path> ResolveWorldFile(const std::string& world_o
 MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::filesystem::path& world_file,
                               const std::optional<Eigen::Isometry3d>& T_world_map = std::nullopt);
 
-// The metrics.json keys MapEvaluation adds, in order: map_error_mean_m,
-// map_error_p95_m, map_error_max_m, map_points, map_error_aligned_mean_m,
-// map_error_aligned_p95_m, map_error_aligned_max_m.
-std::vector<std::string> MapEvaluationJsonKeys();
+// The map metrics and files for eval::WriteEvaluationReport. Metrics in
+// order: map_error_mean_m, map_error_p95_m, map_error_max_m, map_points,
+// map_error_aligned_mean_m, map_error_aligned_p95_m, map_error_aligned_max_m
+// (full precision in metrics.json, the aligned ones null when absent; rows
+// with 4 decimals, "n/a" for an absent aligned variant). Sources: the map
+// and the world file.
+eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation);
 
-// Display rows for the same keys (4 decimals; "n/a" for an absent aligned
-// variant), for the console table.
+// The same rows, for the console table.
 std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation);
-
-// Adds the map metrics to the files eval::WriteEvaluationReport wrote in
-// out_dir: the keys above to metrics.json (full precision; the aligned ones
-// null when absent) and the rows plus the map and world file names to
-// report.html. Both files are rewritten atomically. Throws unimap::Error
-// when they are missing, were not written by WriteEvaluationReport, or
-// cannot be written.
-void AddMapEvaluationToReport(const MapEvaluation& evaluation, const std::filesystem::path& out_dir);
 
 }  // namespace unimap::cli

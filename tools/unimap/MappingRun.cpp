@@ -31,10 +31,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       throw InputError("--motion: unknown source '" + options.motion + "' (imu, odometry, constant-velocity)");
     }
     io::DatasetReader reader(options.data_dir);
-    if (!reader.metadata().payload.empty() && reader.metadata().payload != platform.plugin.plugin->Name()) {
-      std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
-                << "', platform uses '" << platform.plugin.plugin->Name() << "'\n";
-    }
+    WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
     const std::filesystem::path out(options.out_dir);
     pipeline::Mapper mapper(mapper_options, platform.plugin.plugin);
     // The filter's own estimate streams to trajectory_odometry.tum; the

@@ -74,6 +74,13 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   return o;
 }
 
+void WarnOnPayloadMismatch(const io::DatasetReader& reader, const std::string& payload) {
+  if (!reader.metadata().payload.empty() && reader.metadata().payload != payload) {
+    std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
+              << "', platform uses '" << payload << "'\n";
+  }
+}
+
 void PrintRunProgress(const pipeline::RunProgress& p) {
   const double rtf = p.wall_s > 0.0 ? p.data_time_s / p.wall_s : 0.0;
   std::fprintf(stderr, "\r%zu scans | %.0f scans/s | %.1fx real time", p.scans,
@@ -107,10 +114,17 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run.Add("gpf_threads", in.gpf_threads);
   run.Add("localizer", LocalizerStatsJson(in.stats));
   for (const auto& [key, object] : in.extras) run.Add(key, object);
+  // The truth and the estimate, read once for every evaluation below.
+  std::vector<StampedPose> truth;
+  std::vector<StampedPose> estimate;
+  if (evaluate) {
+    truth = io::ReadTumTrajectory(truth_file);
+    estimate = io::ReadTumTrajectory(trajectory);
+  }
   if (evaluate && !in.odometry_file.empty()) {
     // The trajectory before pose-graph optimisation, for comparison.
-    const eval::TrajectoryEvaluation odometry = eval::EvaluateTrajectory(
-        io::ReadTumTrajectory(out / in.odometry_file), io::ReadTumTrajectory(truth_file), {});
+    const eval::TrajectoryEvaluation odometry =
+        eval::EvaluateTrajectory(io::ReadTumTrajectory(out / in.odometry_file), truth, {});
     JsonObject o;
     o.Add("file", in.odometry_file);
     o.Add("ate_rmse_m", odometry.metrics.ate_rmse_m);
@@ -119,8 +133,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   }
   WorldFrameErrors world_errors;
   if (in.world_frame_errors && evaluate) {
-    world_errors = ComputeWorldFrameErrors(io::ReadTumTrajectory(trajectory),
-                                           io::ReadTumTrajectory(truth_file));
+    world_errors = ComputeWorldFrameErrors(estimate, truth);
   }
   if (in.world_frame_errors) {
     const bool defined = world_errors.poses > 0;
@@ -144,22 +157,20 @@ int WriteRunOutputs(const RunOutputsInput& in) {
               << "  rotation_max_error_deg = " << world_errors.rotation_max_error_deg << '\n';
   }
   if (evaluate) {
-    const auto truth = io::ReadTumTrajectory(truth_file);
-    const auto estimate = io::ReadTumTrajectory(trajectory);
     const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(estimate, truth, {});
-    eval::WriteEvaluationReport(evaluation, {trajectory.string(), truth_file.string()}, out);
+    // Map accuracy against the simulated world's true surfaces (map_error_*).
+    eval::ReportExtras map_extras;
+    const std::optional<std::filesystem::path> world = ResolveWorldFile("", truth_file);
+    if (!in.map_file.empty() && world) {
+      map_extras =
+          MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source));
+    }
+    eval::WriteEvaluationReport(evaluation, {trajectory.string(), truth_file.string()}, out, map_extras);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       std::cout << "  " << row.key << " = " << row.value << '\n';
     }
-    // Map accuracy against the simulated world's true surfaces (map_error_*).
-    const std::optional<std::filesystem::path> world = ResolveWorldFile("", truth_file);
-    if (!in.map_file.empty() && world) {
-      const MapEvaluation map_evaluation =
-          EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source);
-      AddMapEvaluationToReport(map_evaluation, out);
-      for (const eval::MetricRow& row : DescribeMapEvaluation(map_evaluation)) {
-        std::cout << "  " << row.key << " = " << row.value << '\n';
-      }
+    for (const eval::ExtraMetric& m : map_extras.metrics) {
+      std::cout << "  " << m.row.key << " = " << m.row.value << '\n';
     }
   }
   std::cout << "wrote " << trajectory.string() << ", " << (out / "run.json").string() << '\n';

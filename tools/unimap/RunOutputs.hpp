@@ -13,6 +13,9 @@
 
 namespace unimap::cli {
 
+// Warns on stderr when the dataset was recorded for another payload than the platform's.
+void WarnOnPayloadMismatch(const io::DatasetReader& reader, const std::string& payload);
+
 // Everything a finished run reports.
 struct RunOutputsInput {
   std::filesystem::path out_dir;       // holds trajectory.tum (written by the run); gets run.json etc.
