@@ -34,6 +34,14 @@ struct LocalizerOptions {
   bool IsValid(std::string* why) const;
   // Shared defaults with the platform's N, sigmas, resolution and max range.
   static LocalizerOptions FromPlatform(const CoreParameters& core);
+  // FromPlatform tuned for tracking in a fixed, complete prior map (unimap
+  // localize): localize_only, sub-voxel surfaces, wide particles, the
+  // plain GPF mean, the IMU's full bias walk, and a distance map no coarser
+  // than kPriorMapResolutionM (a .bt map keeps its own resolution).
+  static LocalizerOptions ForPriorMap(const CoreParameters& core);
+  // The finest voxel edge a prior map gets by default (m): the voxel `unimap
+  // run` filters its map.pcd to, so a finer field would add no detail.
+  static constexpr double kPriorMapResolutionM = 0.1;
 };
 
 }  // namespace unimap::pipeline

@@ -143,28 +143,8 @@ int RunLocalize(const LocalizeCliOptions& options) {
     if (!options.initial_pose.empty()) ParsePose(options.initial_pose);
     const Platform platform = LoadPlatform(options.platform_file);
     pipeline::LocalizerOptions localizer_options =
-        pipeline::LocalizerOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+        pipeline::LocalizerOptions::ForPriorMap(CoreParameters::FromMap(platform.parameters));
     localizer_options.gpf.threads = options.threads;
-    localizer_options.localize_only = true;
-    // A fixed map: distances to the surface inside each voxel, not to voxel
-    // centres (20 s tunnel, rotating Hokuyo: position RMSE 0.014 m vs 0.062 m).
-    localizer_options.map.subvoxel_surfaces = true;
-    // The plain GPF mean, without the Gauss-Newton refinement odometry uses:
-    // in the true map (60 s of tunnel) refinement cost rotation accuracy
-    // (rotation RMSE fixed VLP-16 0.120 -> 0.230 deg, rotating Hokuyo 0.216
-    // -> 0.343 deg, rotating VLP-16 0.159 -> 0.150 deg).
-    localizer_options.gpf.refine_iterations = 0;
-    // Particles spread at least 3 cm and 0.01 rad, wider than the IMU's
-    // prediction between two scans, so that their weights resolve the scan's
-    // likelihood in a complete map instead of echoing Monte-Carlo noise (ESS
-    // near K). 60 s of tunnel, position / rotation RMSE, floors 5 mm and
-    // 0.001 rad -> these: fixed VLP-16 0.037 / 0.082 -> 0.022 / 0.064,
-    // rotating Hokuyo 0.081 / 0.227 -> 0.047 / 0.134, rotating VLP-16 (0.3 m
-    // map) 0.081 / 0.151 -> 0.075 / 0.169. Odometry keeps the narrow floors:
-    // in its growing map the wide particles lock onto the unmapped edges
-    // (hallway, rotating Hokuyo: ATE 0.80 m -> 11 m).
-    localizer_options.gpf.min_sigma_position_m = 0.03;
-    localizer_options.gpf.min_sigma_rotation_rad = 0.01;
     const bool bt_map = std::filesystem::path(options.map_file).extension() == ".bt";
     if (options.map_resolution_m > 0.0) {
       if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");
@@ -205,6 +185,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     std::cout << "map " << options.map_file;
     if (map_points > 0) std::cout << ": " << map_points << " points";
     const double map_resolution_m = prior->options().resolution_m;
+    localizer_options.gpf.voxel_size_m = map_resolution_m;  // a .bt map's own resolution too
     std::cout << ", resolution " << map_resolution_m << " m, "
               << (whole_map ? "one distance box for the whole map" : "distance box following the sensor") << '\n';
 
@@ -261,7 +242,7 @@ void AddLocalizeCommand(CLI::App* app) {
       ->check(CLI::IsMember({"pose", "gravity"}));
   cmd->add_option("--map-resolution-m", options->map_resolution_m,
                   "Distance-map voxel edge (m) for a .pcd prior map (a .bt map keeps its own), also the "
-                  "scan's downsampling voxel (default: the platform's distance_map_resolution_m)")
+                  "scan's downsampling voxel (default: the platform's distance_map_resolution_m, at most 0.1)")
       ->check(CLI::Range(0.01, 2.0));
   cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)");
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));

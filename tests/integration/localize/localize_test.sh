@@ -5,12 +5,12 @@ source "$(dirname "$0")/../script_helpers.sh" "$@"
 
 case $case_name in
   tunnel_hokuyo_20s | tunnel_fixed_vlp16_20s | tunnel_rotating_vlp16_20s)
-    # 20 s of the tunnel (5 s static start, climb from 1.5 m to 5 m) per payload; the
-    # rotating VLP-16 with a 0.1 m map instead of its platform's 0.3 m (see docs/localization.md).
+    # 20 s of the tunnel (5 s static start, climb from 1.5 m to 5 m) per payload, each at
+    # localize's default map resolution (the rotating VLP-16's 0.3 m capped at 0.1 m).
     case $case_name in
       tunnel_hokuyo_20s) platform=$hokuyo extra=() ;;
       tunnel_fixed_vlp16_20s) platform="$src/configs/platforms/fixed_vlp16.yaml" extra=() ;;
-      tunnel_rotating_vlp16_20s) platform="$src/configs/platforms/rotating_vlp16.yaml" extra=(--map-resolution-m 0.1) ;;
+      tunnel_rotating_vlp16_20s) platform="$src/configs/platforms/rotating_vlp16.yaml" extra=() ;;
     esac
     code=$(run simulate --scenario "$src/configs/scenarios/tunnel.yaml" --payload "$platform" --duration-s 20 \
                --out "$work/data" --quiet)
@@ -23,6 +23,7 @@ case $case_name in
     expect "^initial pose \(groundtruth\): 2 0 1.5 0 0 0 1, attitude: pose \(accelerometer bias from the static start\)$"
     grep -q '"initial_attitude": "pose"' "$work/out/run.json" || fail "run.json: initial_attitude is not pose"
     for f in trajectory.tum run.json metrics.json report.html; do [ -s "$work/out/$f" ] || fail "no $f"; done
+    grep -q '"map_resolution_m": 0.1,' "$work/out/run.json" || fail "run.json: map_resolution_m is not 0.1"
     pos=$(json_number "$work/out/run.json" position_rmse_m)
     rot=$(json_number "$work/out/run.json" rotation_rmse_deg)
     echo "position_rmse_m=$pos rotation_rmse_deg=$rot"

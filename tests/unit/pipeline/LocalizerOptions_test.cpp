@@ -1,0 +1,70 @@
+#include "pipeline/LocalizerOptions.hpp"
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "unimap/CoreParameters.hpp"
+
+namespace unimap::pipeline {
+namespace {
+
+CoreParameters WithResolution(double resolution_m) {
+  CoreParameters core;
+  core.scans_per_3d_scan = 40;
+  core.sigma_accel_m_s2 = 0.03;
+  core.distance_map_resolution_m = resolution_m;
+  core.distance_map_max_range_m = 15.0;
+  return core;
+}
+
+TEST(LocalizerOptionsTest, FromPlatformTakesThePlatformsValues) {
+  const LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.3));
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why)) << why;
+  EXPECT_EQ(o.scans_per_3d_scan, 40);
+  EXPECT_DOUBLE_EQ(o.eskf.sigma_accel_m_s2, 0.03);
+  EXPECT_DOUBLE_EQ(o.map.resolution_m, 0.3);
+  EXPECT_DOUBLE_EQ(o.gpf.voxel_size_m, 0.3);
+  EXPECT_DOUBLE_EQ(o.map.max_range_m, 15.0);
+  EXPECT_FALSE(o.localize_only);
+  EXPECT_FALSE(o.map.subvoxel_surfaces);
+}
+
+TEST(LocalizerOptionsTest, ForPriorMapCapsACoarsePlatformResolution) {
+  const LocalizerOptions o = LocalizerOptions::ForPriorMap(WithResolution(0.3));
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why)) << why;
+  EXPECT_DOUBLE_EQ(o.map.resolution_m, LocalizerOptions::kPriorMapResolutionM);
+  EXPECT_DOUBLE_EQ(o.gpf.voxel_size_m, LocalizerOptions::kPriorMapResolutionM);
+  // The platform's other values are kept.
+  EXPECT_EQ(o.scans_per_3d_scan, 40);
+  EXPECT_DOUBLE_EQ(o.eskf.sigma_accel_m_s2, 0.03);
+  EXPECT_DOUBLE_EQ(o.map.max_range_m, 15.0);
+}
+
+TEST(LocalizerOptionsTest, ForPriorMapKeepsAFinerPlatformResolution) {
+  const LocalizerOptions o = LocalizerOptions::ForPriorMap(WithResolution(0.05));
+  EXPECT_DOUBLE_EQ(o.map.resolution_m, 0.05);
+  EXPECT_DOUBLE_EQ(o.gpf.voxel_size_m, 0.05);
+}
+
+TEST(LocalizerOptionsTest, ForPriorMapTunesForAFixedMap) {
+  const LocalizerOptions odometry = LocalizerOptions::FromPlatform(WithResolution(0.1));
+  const LocalizerOptions prior = LocalizerOptions::ForPriorMap(WithResolution(0.1));
+  EXPECT_TRUE(prior.localize_only);
+  EXPECT_TRUE(prior.map.subvoxel_surfaces);
+  EXPECT_EQ(prior.gpf.refine_iterations, 0);
+  EXPECT_GT(odometry.gpf.refine_iterations, 0);
+  // Wider particles than odometry's.
+  EXPECT_GT(prior.gpf.min_sigma_position_m, odometry.gpf.min_sigma_position_m);
+  EXPECT_GT(prior.gpf.min_sigma_rotation_rad, odometry.gpf.min_sigma_rotation_rad);
+  // The simulated IMU's bias walks, twice odometry's.
+  EXPECT_DOUBLE_EQ(prior.eskf.accel_bias_walk_m_s2_sqrt_s, 2e-4);
+  EXPECT_DOUBLE_EQ(prior.eskf.gyro_bias_walk_rad_s_sqrt_s, 2e-5);
+  EXPECT_DOUBLE_EQ(prior.eskf.accel_bias_walk_m_s2_sqrt_s, 2.0 * odometry.eskf.accel_bias_walk_m_s2_sqrt_s);
+  EXPECT_DOUBLE_EQ(prior.eskf.gyro_bias_walk_rad_s_sqrt_s, 2.0 * odometry.eskf.gyro_bias_walk_rad_s_sqrt_s);
+}
+
+}  // namespace
+}  // namespace unimap::pipeline
