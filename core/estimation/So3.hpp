@@ -36,6 +36,12 @@ inline Eigen::Vector3d LogQ(const Eigen::Quaterniond& q_in) {
   return 2.0 * std::atan2(s, q.w()) * v / s;
 }
 
+// Heading of a rotation: the angle of its x axis projected on the world x-y
+// plane (the yaw of a yaw-pitch-roll decomposition).
+inline double Heading(const Eigen::Matrix3d& R_world_body) {
+  return std::atan2(R_world_body(1, 0), R_world_body(0, 0));
+}
+
 // A pose moved by an error e = [dp, dtheta]: (p + dp, R Exp(dtheta)), the
 // ESKF's error convention (Sola eq. 283, with the local rotation error).
 inline Eigen::Isometry3d ApplyPoseError(const Eigen::Isometry3d& T, const Eigen::Matrix<double, 6, 1>& e) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "estimation/So3.hpp"
+
 namespace unimap::estimation {
 
 StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
@@ -72,10 +74,8 @@ PoseStart PlaceAtPose(const StaticAlignment& alignment, const Eigen::Isometry3d&
                " m/s^2): roll and pitch from gravity instead";
   }
   // Heading of the pose's x axis, roll and pitch of the alignment (yaw-pitch-roll).
-  const double yaw = std::atan2(R_pose(1, 0), R_pose(0, 0));
-  const Eigen::Matrix3d R_gravity = alignment.q_world_body.toRotationMatrix();
-  const double gravity_yaw = std::atan2(R_gravity(1, 0), R_gravity(0, 0));
-  state->q_world_body = Eigen::AngleAxisd(yaw - gravity_yaw, Eigen::Vector3d::UnitZ()) * alignment.q_world_body;
+  const double turn = Heading(R_pose) - Heading(alignment.q_world_body.toRotationMatrix());
+  state->q_world_body = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()) * alignment.q_world_body;
   out.attitude = InitialAttitude::kGravity;
   return out;
 }

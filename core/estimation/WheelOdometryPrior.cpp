@@ -53,8 +53,9 @@ MotionPrediction WheelOdometryPrior::Predict(double t0, double t1) const {
   }
   // Motion before the first reading is unknown: the increment starts there.
   if (!samples_.empty() && t0 < samples_.front().time_s && t1 >= samples_.front().time_s) t0 = samples_.front().time_s;
-  if (!Interpolate(t0, &T0) || !Interpolate(t1, &T1)) {
-    out.reason = "no wheel odometry around " + std::to_string(Interpolate(t0, &T0) ? t1 : t0) + " s";
+  const bool have_t0 = Interpolate(t0, &T0);
+  if (!have_t0 || !Interpolate(t1, &T1)) {
+    out.reason = "no wheel odometry around " + std::to_string(have_t0 ? t1 : t0) + " s";
     return out;
   }
   out.ok = true;

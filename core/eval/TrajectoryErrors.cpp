@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "estimation/So3.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::eval {
@@ -16,21 +17,13 @@ Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q_in) {
   return angle * q.vec() / sin_half;
 }
 
-namespace {
-
-// Heading of a body: the angle of its x axis projected on the world x-y plane.
-double Heading(const Eigen::Isometry3d& T_world_body) {
-  return std::atan2(T_world_body.linear()(1, 0), T_world_body.linear()(0, 0));
-}
-
-}  // namespace
-
 Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const Eigen::Isometry3d& T_est_first,
                                   Anchor anchor) {
   if (anchor == Anchor::kFullPose) return T_true_first * T_est_first.inverse();
   Eigen::Isometry3d T_true_est = Eigen::Isometry3d::Identity();
   T_true_est.linear() =
-      Eigen::AngleAxisd(Heading(T_true_first) - Heading(T_est_first), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      Eigen::AngleAxisd(estimation::Heading(T_true_first.linear()) - estimation::Heading(T_est_first.linear()),
+                        Eigen::Vector3d::UnitZ()).toRotationMatrix();
   T_true_est.translation() = T_true_first.translation() - T_true_est.linear() * T_est_first.translation();
   return T_true_est;
 }

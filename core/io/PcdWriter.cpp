@@ -35,19 +35,19 @@ void AppendText(float v, std::string* out) {
 
 void WritePcdXyz(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map,
                  PcdEncoding encoding) {
-  PartialFile out(file);
-  out.Write(Header(points_map.size(), encoding));
-  if (encoding == PcdEncoding::kBinary) {
-    WriteXyzFloat32Le(out, points_map);
-  } else {
-    WritePointRecords(out, points_map, [](const Eigen::Vector3f& p, std::string* record) {
-      for (int j = 0; j < 3; ++j) {
-        AppendText(p[j], record);
-        record->push_back(j < 2 ? ' ' : '\n');
-      }
-    });
-  }
-  out.Commit();
+  WriteWholeFile(file, [&](PartialFile& out) {
+    out.Write(Header(points_map.size(), encoding));
+    if (encoding == PcdEncoding::kBinary) {
+      WriteXyzFloat32Le(out, points_map);
+    } else {
+      WritePointRecords(out, points_map, [](const Eigen::Vector3f& p, std::string* record) {
+        for (int j = 0; j < 3; ++j) {
+          AppendText(p[j], record);
+          record->push_back(j < 2 ? ' ' : '\n');
+        }
+      });
+    }
+  });
 }
 
 }  // namespace unimap::io

@@ -15,8 +15,8 @@ enum class PcdEncoding {
 };
 
 // Writes points_map (in order) to file atomically: "<file>.partial" is
-// written and renamed into place (io::PartialFile), so a failed write never
-// leaves a file that looks complete. The header is
+// written and renamed into place (io::WriteWholeFile), so a failed write
+// never leaves a file that looks complete, nor the ".partial". The header is
 //   VERSION 0.7, FIELDS x y z, SIZE 4 4 4, TYPE F F F, COUNT 1 1 1,
 //   WIDTH n, HEIGHT 1, VIEWPOINT 0 0 0 1 0 0 0, POINTS n, DATA binary|ascii.
 // Non-finite points are written as they are (PCD allows NaN). Throws

@@ -32,10 +32,11 @@ class OccupancyTree;
 // queued and integrated on a background thread; each update that can change
 // distances publishes a new immutable DistanceField (a batch that only moves
 // the sensor inside the box keeps the last one, with its sequence) that
-// readers take with Snapshot() without ever waiting for an update in progress. The box follows the sensor: when it
-// moves farther than recentre_fraction * max_range_m from the box centre, the
-// transform is rebuilt around it (the previous snapshot stays valid until the
-// new one is published). The box is clipped to the occupied voxels near the
+// readers take with Snapshot() without ever waiting for an update in
+// progress. The box follows the sensor: when it moves farther than
+// recentre_fraction * max_range_m from the box centre, the transform is
+// rebuilt around it (the previous snapshot stays valid until the new one is
+// published). The box is clipped to the occupied voxels near the
 // sensor (see FieldBoxPlanner). Requests queued while an update runs are
 // integrated together, with one distance update for the batch. With
 // options.subvoxel_surfaces, distances are to the surface the returns put

@@ -35,7 +35,7 @@ struct LocalizeCliOptions {
   std::string out_dir;          // output folder
   std::string initial_pose;     // "x y z qx qy qz qw" (T_map_body), empty: from the truth or identity
   std::string initial_attitude; // "pose" or "gravity"; empty: pose for a ground-truth start, else gravity
-  double map_resolution_m = 0.0;  // distance-map voxel (m); 0: the platform's
+  double map_resolution_m = 0.0;  // distance-map voxel (m); 0: ForPriorMap's (platform's, at most 0.1)
   double max_duration_s = 0.0;  // 0: the whole dataset
   int threads = 1;              // GPF threads
   bool quiet = false;           // no progress line
@@ -149,7 +149,6 @@ int RunLocalize(const LocalizeCliOptions& options) {
     if (options.map_resolution_m > 0.0) {
       if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");
       localizer_options.map.resolution_m = options.map_resolution_m;
-      localizer_options.gpf.voxel_size_m = options.map_resolution_m;
     }
     if (!bt_map) {
       // The particle filter clamps distances at its own clamp, so a field
@@ -185,7 +184,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     std::cout << "map " << options.map_file;
     if (map_points > 0) std::cout << ": " << map_points << " points";
     const double map_resolution_m = prior->options().resolution_m;
-    localizer_options.gpf.voxel_size_m = map_resolution_m;  // a .bt map's own resolution too
+    localizer_options.gpf.voxel_size_m = map_resolution_m;  // scans downsampled at the loaded map's voxel
     std::cout << ", resolution " << map_resolution_m << " m, "
               << (whole_map ? "one distance box for the whole map" : "distance box following the sensor") << '\n';
 

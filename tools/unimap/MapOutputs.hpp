@@ -25,7 +25,8 @@ JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline:
 
 // Position errors (start-anchored on the first odometry pose's position and
 // heading, eval::AnchorTransform) of the odometry and the optimised
-// trajectories against the truth at time_s (the first loop closure), as {"time_s", "odometry": {...}, "optimized": {...}} with
+// trajectories against the truth at time_s (the first loop closure), as
+// {"time_s", "odometry": {...}, "optimized": {...}} with
 // "height_error_m" (|dz|) and "position_error_m"; an empty object when no
 // pose lies within 0.1 s of time_s.
 JsonObject LoopPointErrors(const std::vector<StampedPose>& odometry, const std::vector<StampedPose>& optimized,
