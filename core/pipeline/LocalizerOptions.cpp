@@ -86,7 +86,7 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // defaults. In a fixed map the bias follows the scans' evidence; where a
   // scan says nothing about the height (fixed VLP-16, 20 s hover behind the
   // last car of the tunnel) the height is the IMU's, and a stale accelerometer
-  // bias let it drift 0.46 m. Full tunnel flight, position / rotation RMSE:
+  // bias let it drift 0.48 m. Full tunnel flight, position / rotation RMSE:
   // fixed VLP-16 0.060 / 0.047 -> 0.045 / 0.040, rotating Hokuyo 0.025 /
   // 0.059 -> 0.020 / 0.049, rotating VLP-16 (0.1 m) 0.025 / 0.074 -> 0.019 /
   // 0.054. Odometry keeps the stiffer bias: in a map built from its own
