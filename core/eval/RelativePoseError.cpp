@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "estimation/So3.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::eval {
@@ -38,7 +39,7 @@ RelativePoseError ComputeRelativePoseError(const TrajectoryAssociation& associat
     const Eigen::Isometry3d delta_est = pairs[i].T_est_body.inverse() * pairs[j].T_est_body;
     const Eigen::Isometry3d E = delta_true.inverse() * delta_est;
     sum_trans_percent += 100.0 * E.translation().norm() / d;
-    const double angle_rad = RotationLog(Eigen::Quaterniond(E.linear())).norm();
+    const double angle_rad = estimation::LogQ(Eigen::Quaterniond(E.linear())).norm();
     sum_rot_deg_per_m += angle_rad * 180.0 / M_PI / d;
     ++result.segments;
   }

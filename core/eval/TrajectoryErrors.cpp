@@ -7,16 +7,6 @@
 
 namespace unimap::eval {
 
-Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q_in) {
-  // Take the hemisphere w >= 0 so that the angle is in [0, pi].
-  const Eigen::Quaterniond q = q_in.w() < 0.0 ? Eigen::Quaterniond(-q_in.coeffs()) : q_in;
-  const double sin_half = q.vec().norm();
-  if (sin_half < 1e-12) return 2.0 * q.vec() / q.w();  // first order: angle/2 ~ sin(angle/2)
-  // q = (cos(a/2), sin(a/2) n)  ->  log(q) = a n.
-  const double angle = 2.0 * std::atan2(sin_half, q.w());
-  return angle * q.vec() / sin_half;
-}
-
 Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const Eigen::Isometry3d& T_est_first,
                                   Anchor anchor) {
   if (anchor == Anchor::kFullPose) return T_true_first * T_est_first.inverse();
@@ -60,7 +50,7 @@ TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& associatio
     // Rotation error as in the paper's pose-error figure (Fig. 8): log(q_est^-1 q_true).
     const Eigen::Quaterniond q_est(T_anchored.linear());
     const Eigen::Quaterniond q_true(pair.T_true_body.linear());
-    e.rotation_error_rad = RotationLog((q_est.conjugate() * q_true).normalized());
+    e.rotation_error_rad = estimation::LogQ(q_est.conjugate() * q_true);
     errors.poses.push_back(e);
   }
   return errors;

@@ -49,8 +49,4 @@ TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& associatio
 Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const Eigen::Isometry3d& T_est_first,
                                   Anchor anchor);
 
-// log: unit quaternion -> rotation vector (angle * axis, angle in [0, pi]);
-// q and -q give the same result.
-Eigen::Vector3d RotationLog(const Eigen::Quaterniond& q);
-
 }  // namespace unimap::eval

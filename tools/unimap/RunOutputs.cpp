@@ -12,6 +12,7 @@
 #include <iostream>
 #include <limits>
 
+#include "estimation/So3.hpp"
 #include "eval/AtomicFile.hpp"
 #include "eval/EvaluationReport.hpp"
 #include "eval/MetricRows.hpp"
@@ -40,7 +41,7 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
     // Rotation error log(q_est^-1 q_true) (DESIGN.md 1), its angle.
     const Eigen::Quaterniond q_est(pair.T_est_body.linear());
     const Eigen::Quaterniond q_true(pair.T_true_body.linear());
-    const double theta_deg = eval::RotationLog(q_est.conjugate() * q_true).norm() * kRadToDeg;
+    const double theta_deg = estimation::LogQ(q_est.conjugate() * q_true).norm() * kRadToDeg;
     sum_p2 += dp * dp;
     sum_r2 += theta_deg * theta_deg;
     e.position_max_error_m = std::max(e.position_max_error_m, dp);

@@ -1,5 +1,7 @@
 #include "estimation/So3.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace unimap::estimation {
@@ -9,6 +11,16 @@ TEST(So3, ExpAndLogAreInverse) {
   const Eigen::Vector3d theta(0.3, -0.2, 0.5);
   EXPECT_LT((LogQ(ExpQ(theta)) - theta).norm(), 1e-12);
   EXPECT_LT((Skew(theta) * Eigen::Vector3d(1, 2, 3) - theta.cross(Eigen::Vector3d(1, 2, 3))).norm(), 1e-15);
+}
+
+TEST(So3, LogGivesAngleTimesAxisOnBothHemispheres) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(1, -2, 3).normalized();
+  for (const double angle : {0.0, 1e-9, 0.3, 2.0, M_PI - 1e-6}) {
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, axis));
+    EXPECT_NEAR((LogQ(q) - angle * axis).norm(), 0.0, 1e-12);
+    // -q is the same rotation.
+    EXPECT_NEAR((LogQ(Eigen::Quaterniond(-q.coeffs())) - angle * axis).norm(), 0.0, 1e-12);
+  }
 }
 
 TEST(So3, ApplyPoseErrorAddsPositionAndRotatesInTheBodyFrame) {

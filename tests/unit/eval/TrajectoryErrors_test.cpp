@@ -12,16 +12,6 @@ namespace {
 
 using testing::MakePose;
 
-TEST(TrajectoryErrorsTest, RotationLogGivesAngleTimesAxis) {
-  const Eigen::Vector3d axis = Eigen::Vector3d(1, -2, 3).normalized();
-  for (const double angle : {0.0, 1e-9, 0.3, 2.0, M_PI - 1e-6}) {
-    const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, axis));
-    EXPECT_NEAR((RotationLog(q) - angle * axis).norm(), 0.0, 1e-12);
-    // -q is the same rotation.
-    EXPECT_NEAR((RotationLog(Eigen::Quaterniond(-q.coeffs())) - angle * axis).norm(), 0.0, 1e-12);
-  }
-}
-
 TEST(TrajectoryErrorsTest, AnchorsTheEstimateOnTheTruthStart) {
   // Truth starts at (5, 0, 0) facing +y; the estimate starts at its own
   // origin facing +x and moves 1 m forward then 1 m left in its body frame,
