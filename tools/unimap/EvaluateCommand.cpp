@@ -91,15 +91,11 @@ int RunEvaluate(const EvaluateOptions& options) {
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       table.AddRow({row.key, row.value, row.meaning});
     }
-    if (map_evaluation) {
-      for (const eval::MetricRow& row : DescribeMapEvaluation(*map_evaluation)) {
-        table.AddRow({row.key, row.value, row.meaning});
-      }
-    }
+    const eval::ReportExtras map_extras = map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{};
+    for (const eval::ExtraMetric& m : map_extras.metrics) table.AddRow({m.row.key, m.row.value, m.row.meaning});
     table.Print(std::cout);
     const std::vector<std::filesystem::path> written =
-        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir,
-                                    map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{});
+        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir, map_extras);
     std::cout << "\nwrote:\n";
     for (const auto& file : written) std::cout << "  " << file.string() << '\n';
     return 0;

@@ -21,15 +21,8 @@ std::string Lowercase(std::string text) {
   return text;
 }
 
-// (key, full-precision JSON value, display value, meaning) of every map metric.
-struct MapMetric {
-  std::string key;
-  std::string json;
-  std::string shown;
-  std::string meaning;
-};
-
-std::vector<MapMetric> Metrics(const MapEvaluation& e) {
+// Every map metric: its full-precision JSON value and its (key, display value, meaning) row.
+std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
   const eval::MapErrorStats& u = e.unaligned;
   const auto aligned = [&](double eval::MapErrorStats::*field) {
     return e.aligned ? eval::JsonNumber((*e.aligned).*field) : std::string("null");
@@ -39,18 +32,15 @@ std::vector<MapMetric> Metrics(const MapEvaluation& e) {
   };
   using S = eval::MapErrorStats;
   return {
-      {"map_error_mean_m", eval::JsonNumber(u.mean_m), Fixed(u.mean_m, 4),
-       "mean distance of the map points to the true surfaces (no alignment), m"},
-      {"map_error_p95_m", eval::JsonNumber(u.p95_m), Fixed(u.p95_m, 4),
-       "95th percentile (nearest rank) of that distance, m"},
-      {"map_error_max_m", eval::JsonNumber(u.max_m), Fixed(u.max_m, 4), "largest distance of a map point, m"},
-      {"map_points", std::to_string(u.points), std::to_string(u.points), "map points evaluated"},
-      {"map_error_aligned_mean_m", aligned(&S::mean_m), aligned_shown(&S::mean_m),
-       "mean distance after moving the map by the ATE alignment, m"},
-      {"map_error_aligned_p95_m", aligned(&S::p95_m), aligned_shown(&S::p95_m),
-       "95th percentile after the ATE alignment, m"},
-      {"map_error_aligned_max_m", aligned(&S::max_m), aligned_shown(&S::max_m),
-       "largest distance after the ATE alignment, m"},
+      {eval::JsonNumber(u.mean_m),
+       {"map_error_mean_m", Fixed(u.mean_m, 4), "mean distance of the map points to the true surfaces (no alignment), m"}},
+      {eval::JsonNumber(u.p95_m), {"map_error_p95_m", Fixed(u.p95_m, 4), "95th percentile (nearest rank) of that distance, m"}},
+      {eval::JsonNumber(u.max_m), {"map_error_max_m", Fixed(u.max_m, 4), "largest distance of a map point, m"}},
+      {std::to_string(u.points), {"map_points", std::to_string(u.points), "map points evaluated"}},
+      {aligned(&S::mean_m),
+       {"map_error_aligned_mean_m", aligned_shown(&S::mean_m), "mean distance after moving the map by the ATE alignment, m"}},
+      {aligned(&S::p95_m), {"map_error_aligned_p95_m", aligned_shown(&S::p95_m), "95th percentile after the ATE alignment, m"}},
+      {aligned(&S::max_m), {"map_error_aligned_max_m", aligned_shown(&S::max_m), "largest distance after the ATE alignment, m"}},
   };
 }
 
@@ -119,15 +109,9 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
 
 eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation) {
   eval::ReportExtras extras;
-  for (const MapMetric& m : Metrics(evaluation)) extras.metrics.push_back({m.json, {m.key, m.shown, m.meaning}});
+  extras.metrics = Metrics(evaluation);
   extras.sources = {{"Map", evaluation.map_file.string()}, {"World (true surfaces)", evaluation.world_file.string()}};
   return extras;
-}
-
-std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation) {
-  std::vector<eval::MetricRow> rows;
-  for (const eval::ExtraMetric& m : MapReportExtras(evaluation).metrics) rows.push_back(m.row);
-  return rows;
 }
 
 }  // namespace unimap::cli

@@ -59,7 +59,4 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
 // and the world file.
 eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation);
 
-// The same rows, for the console table.
-std::vector<eval::MetricRow> DescribeMapEvaluation(const MapEvaluation& evaluation);
-
 }  // namespace unimap::cli
