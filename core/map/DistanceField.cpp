@@ -136,6 +136,30 @@ std::uint16_t DistanceField::Quantise(float distance_m, float clamp_m) {
   return static_cast<std::uint16_t>(std::min(steps, static_cast<float>(kMaxSteps)));
 }
 
+void DistanceField::SetPlanes(CellPlanes planes) {
+  if (planes.size() != cells_.size()) {
+    throw InputError("DistanceField: " + std::to_string(planes.size()) + " cell planes for " +
+                     std::to_string(cells_.size()) + " cells");
+  }
+  planes_ = std::move(planes);
+}
+
+bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* normal,
+                            float* offset_m) const {
+  if (planes_.size() == 0) return false;
+  const Eigen::Vector3f f = (p_map - origin_m_) * inv_resolution_;
+  if (!((f.array() >= 0.0f).all() && (f.array() < dims_f_.array()).all())) return false;
+  const Eigen::Vector3i cell = f.cast<int>();
+  const std::size_t index = static_cast<std::size_t>(cell.x()) * stride_x_ +
+                            static_cast<std::size_t>(cell.y()) * stride_y_ +
+                            static_cast<std::size_t>(cell.z());
+  float centre_height_m = 0.0f;
+  if (!planes_.Get(index, normal, &centre_height_m)) return false;
+  // height(x) = h_c + n . (x - c) = n . x + (h_c - n . c).
+  *offset_m = centre_height_m - normal->dot(CellCentre(cell));
+  return true;
+}
+
 float DistanceField::CellDistance(const Eigen::Vector3i& cell) const {
   return std::abs(CellValue(cell));
 }

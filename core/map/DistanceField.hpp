@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "map/CellPlanes.hpp"
+
 namespace unimap::map {
 
 // Immutable snapshot of the distance map for lookups: a dense grid over an
@@ -89,6 +91,15 @@ class DistanceField {
   // (see kMaxCrossingSum), so a surface between two centres reads zero.
   float DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const;
 
+  // Attaches the planes of the cells' nearest surface elements (same grid);
+  // call before the field is shared. Throws InputError when the sizes differ.
+  void SetPlanes(CellPlanes planes);
+  // The plane of the surface element nearest to the cell containing p_map:
+  // unit normal and offset with normal . x + offset the signed height of x
+  // above it. False outside the box, without planes, or when the cell has none.
+  bool PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* normal, float* offset_m) const;
+  bool HasPlanes() const { return planes_.size() > 0; }
+
   // Distance (m) stored for a cell; clamp() when the cell is outside the grid.
   float CellDistance(const Eigen::Vector3i& cell) const;
   // Signed value (m) stored for a cell (negative behind a surface in kSigned
@@ -107,7 +118,9 @@ class DistanceField {
   Encoding encoding() const { return offset_m_ > 0.0f ? Encoding::kSigned : Encoding::kUnsigned; }
   std::uint64_t sequence() const { return sequence_; }         // updates integrated when exported
   std::size_t CellCount() const { return cells_.size(); }
-  std::size_t MemoryBytes() const { return cells_.size() * sizeof(std::uint16_t); }
+  std::size_t MemoryBytes() const {
+    return cells_.size() * sizeof(std::uint16_t) + planes_.MemoryBytes();
+  }
 
  private:
   Eigen::Vector3f origin_m_ = Eigen::Vector3f::Zero();
@@ -124,6 +137,7 @@ class DistanceField {
   std::size_t stride_x_ = 0;
   std::size_t stride_y_ = 0;
   std::vector<std::uint16_t> cells_;
+  CellPlanes planes_;  // SetPlanes's; empty: none
   std::uint64_t sequence_ = 0;
 
   // Sets the stencil flag of every cell whose stencil (itself up to +1 on

@@ -48,9 +48,8 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
                                  static_cast<float>(min_centre.y() - half_voxel_m),
                                  static_cast<float>(min_centre.z() - half_voxel_m));
   const auto make_field = [&](DistanceField::Encoding encoding) {
-    return std::make_shared<const DistanceField>(origin_m, dims,
-                                                 static_cast<float>(tree_->getResolution()),
-                                                 clamp_m_, std::move(cells), sequence, encoding);
+    return std::make_shared<DistanceField>(origin_m, dims, static_cast<float>(tree_->getResolution()),
+                                           clamp_m_, std::move(cells), sequence, encoding);
   };
   std::size_t index = 0;
   if (surfaces == nullptr) {
@@ -64,11 +63,15 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
     }
     return make_field(DistanceField::Encoding::kUnsigned);
   }
-  FillSigned(*surfaces, &cells);
-  return make_field(DistanceField::Encoding::kSigned);
+  CellPlanes planes(cells.size());
+  FillSigned(*surfaces, &cells, &planes);
+  std::shared_ptr<DistanceField> field = make_field(DistanceField::Encoding::kSigned);
+  field->SetPlanes(std::move(planes));
+  return field;
 }
 
-void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells) const {
+void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells,
+                           CellPlanes* planes) const {
   // Neighbouring cells mostly share their nearest obstacle. Remember the
   // obstacle (and its element) of each cell of the current x plane, so the
   // cells just visited along z, y and x are checked first, then a small
@@ -119,6 +122,10 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
             if (seen.element != nullptr) {
               const Eigen::Vector3f centre = min_centre + cell.cast<float>() * resolution_m;
               distance_m = surfaces.SignedDistance(*seen.element, centre);
+              if (seen.element->planar) {
+                planes->Set(index, seen.element->normal,
+                            seen.element->normal.dot(centre - seen.element->mean_m));
+              }
             }
           }
         }

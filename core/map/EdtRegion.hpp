@@ -39,6 +39,8 @@ class EdtRegion {
   // nearest occupied voxel (by centre, as the transform finds it) has a
   // surface element hold the signed distance to that element instead
   // (SurfacePoints::SignedDistance); the others keep the centre distance.
+  // With surfaces the field also carries the plane of each cell's nearest
+  // planar element (DistanceField::SetPlanes).
   std::shared_ptr<const DistanceField> Export(std::uint64_t sequence,
                                               const SurfacePoints* surfaces = nullptr) const;
 
@@ -47,7 +49,9 @@ class EdtRegion {
 
  private:
   // Export's cells with surfaces (kSigned codes, in the box's x-y-z order).
-  void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells) const;
+  // planes receives the plane of each cell's nearest planar element.
+  void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells,
+                  CellPlanes* planes) const;
 
   octomap::OcTree* tree_;
   KeyBox box_;

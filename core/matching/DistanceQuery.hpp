@@ -31,6 +31,16 @@ class DistanceQuery {
       for (int a = 0; a < 3; ++a) gradients_map[i](a) = (d[2 * a] - d[2 * a + 1]) / (2.0f * h);
     }
   }
+  // The plane of the surface nearest to each of n points (map frame): out[i]
+  // false when there is none (the default: fields without planes), else
+  // normals[i] . x + offsets[i] is the signed height of x above it.
+  virtual void Planes(const Eigen::Vector3f* points_map, int n, bool* out, Eigen::Vector3f* normals,
+                      float* offsets_m) const {
+    (void)points_map;
+    (void)normals;
+    (void)offsets_m;
+    for (int i = 0; i < n; ++i) out[i] = false;
+  }
   // Finite-difference step of the default DistancesAndGradients (m).
   virtual float gradient_step_m() const { return 0.01f; }
 };

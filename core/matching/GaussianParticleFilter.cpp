@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -19,6 +20,31 @@ namespace {
 // Dimensions sampled: all six, or x, y, yaw for planar motion.
 std::vector<int> ActiveDims(bool planar) {
   return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
+}
+
+// Moves the points whose cell at the predicted pose has a surface plane out
+// of *points into plane points tied to that plane.
+std::vector<PlanePoint> TieToPlanes(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field,
+                                    std::vector<Eigen::Vector3f>* points) {
+  const int n = static_cast<int>(points->size());
+  const Eigen::Isometry3f T = T_map_body_predicted.cast<float>();
+  std::vector<Eigen::Vector3f> points_map(points->size());
+  for (int i = 0; i < n; ++i) points_map[i] = T * (*points)[i];
+  std::unique_ptr<bool[]> has_plane(new bool[points->size()]);
+  std::vector<Eigen::Vector3f> normals(points->size());
+  std::vector<float> offsets(points->size());
+  field.Planes(points_map.data(), n, has_plane.get(), normals.data(), offsets.data());
+  std::vector<PlanePoint> plane_points;
+  std::size_t kept = 0;
+  for (int i = 0; i < n; ++i) {
+    if (has_plane[i]) {
+      plane_points.push_back(PlanePoint{(*points)[i], normals[i], offsets[i]});
+    } else {
+      (*points)[kept++] = (*points)[i];
+    }
+  }
+  points->resize(kept);
+  return plane_points;
 }
 
 }  // namespace
@@ -43,11 +69,13 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
                                         const std::vector<Eigen::Vector3f>& points_body,
                                         const DistanceQuery& field) {
   GpfResult result;
-  const std::vector<Eigen::Vector3f> points =
+  std::vector<Eigen::Vector3f> points =
       VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
   ++scans_matched_;
   result.points_used = static_cast<int>(points.size());
-  if (points.empty()) {
+  std::vector<PlanePoint> plane_points;
+  if (options_.point_to_plane) plane_points = TieToPlanes(T_map_body_predicted, field, &points);
+  if (points.empty() && plane_points.empty()) {
     result.reason = "no points to match";
     return result;
   }
@@ -90,7 +118,8 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     for (int k = range.begin(); k != range.end(); ++k) {
       const auto i = static_cast<std::size_t>(k);
       const Eigen::Isometry3d T_particle = estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]);
-      ws.log_weights[i] = likelihood.LogLikelihood(field, T_particle, points, &scratch_points, &scratch_distances);
+      ws.log_weights[i] =
+          likelihood.LogLikelihood(field, T_particle, points, plane_points, &scratch_points, &scratch_distances);
     }
   };
   if (ws.arena) {
@@ -145,7 +174,7 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points,
                               options_.refine_iterations);
     const PoseRefinement refined =
-        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, field);
+        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, plane_points, field);
     if (refined.ok) {
       result.refined = true;
       result.refine_iterations = refined.iterations;

@@ -19,6 +19,10 @@ struct GpfOptions {
   int refine_iterations = 0;             // Gauss-Newton steps from the GPF mean on the same posterior
                                          // (PoseRefiner; 0: plain GPF); the refined Laplace posterior
                                          // then replaces the particles' weighted mean and covariance
+  bool point_to_plane = false;           // points whose cell at the predicted pose has a surface plane
+                                         // (DistanceQuery::Planes) are measured against that plane by
+                                         // every particle and the refinement (PlanePoint), the others
+                                         // against the field
   int threads = 1;                       // particles weighted in parallel (TBB)
   std::uint64_t seed = 1;                // sampling seed (deterministic per scan sequence)
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include <Eigen/Cholesky>
 
@@ -37,11 +38,21 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
                                    const std::vector<int>& active_dims,
                                    const std::vector<Eigen::Vector3f>& points_body,
                                    const DistanceQuery& field) const {
+  return Refine(T_map_body_predicted, prior_mean, prior_covariance, start, active_dims, points_body, {}, field);
+}
+
+PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
+                                   const Matrix6d& prior_covariance, const Vector6d& start,
+                                   const std::vector<int>& active_dims,
+                                   const std::vector<Eigen::Vector3f>& points_body,
+                                   const std::vector<PlanePoint>& plane_points,
+                                   const DistanceQuery& field) const {
   PoseRefinement out;
   const int n = static_cast<int>(points_body.size());
+  const int total = n + static_cast<int>(plane_points.size());
   const int d = static_cast<int>(active_dims.size());
-  if (n == 0 || d == 0) {
-    out.reason = n == 0 ? "no points to match" : "no active dimension";
+  if (total == 0 || d == 0) {
+    out.reason = total == 0 ? "no points to match" : "no active dimension";
     return out;
   }
   // Prior information on the active dimensions.
@@ -55,7 +66,7 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
     return out;
   }
   const Eigen::MatrixXd P_inv = llt_prior.solve(Eigen::MatrixXd::Identity(d, d));
-  const double w = effective_points_ / (static_cast<double>(n) * sigma_m_ * sigma_m_);  // W
+  const double w = effective_points_ / (static_cast<double>(total) * sigma_m_ * sigma_m_);  // W
   const auto clamp = static_cast<float>(clamp_m_);
   const auto active = [&](const Vector6d& e) {
     Eigen::VectorXd v(d);
@@ -73,6 +84,11 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
     double sum_sq = 0.0;
     for (int i = 0; i < n; ++i) {
       const double di = std::min(s.distances[static_cast<std::size_t>(i)], clamp);
+      sum_sq += di * di;
+    }
+    const Eigen::Isometry3f T = estimation::ApplyPoseError(T_map_body_predicted, e).cast<float>();
+    for (const PlanePoint& q : plane_points) {
+      const double di = std::min(std::abs(q.normal_map.dot(T * q.p_body) + q.offset_m), clamp);
       sum_sq += di * di;
     }
     return prior_cost(e) + 0.5 * w * sum_sq;
@@ -101,6 +117,22 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
       J.tail<3>() = points_body[k].cast<double>().cross(Rt * grad);
       H->noalias() += J * J.transpose();
       *g += di * J;
+    }
+    // Plane points: signed residual r = n . (R p + t) + o, gradient n.
+    const Eigen::Isometry3f Tf = T.cast<float>();
+    for (const PlanePoint& q : plane_points) {
+      const double ri = q.normal_map.dot(Tf * q.p_body) + q.offset_m;
+      if (!(std::abs(ri) < clamp_m_)) {
+        sum_sq += clamp_m_ * clamp_m_;
+        continue;
+      }
+      sum_sq += ri * ri;
+      const Eigen::Vector3d normal = q.normal_map.cast<double>();
+      Vector6d J;
+      J.head<3>() = normal;
+      J.tail<3>() = q.p_body.cast<double>().cross(Rt * normal);
+      H->noalias() += J * J.transpose();
+      *g += ri * J;
     }
     *H *= w;
     *g *= w;

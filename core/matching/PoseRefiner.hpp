@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "matching/DistanceQuery.hpp"
+#include "matching/PlanePoint.hpp"
 #include "matching/PseudoMeasurement.hpp"
 
 namespace unimap::matching {
@@ -47,6 +48,12 @@ class PoseRefiner {
                         const Matrix6d& prior_covariance, const Vector6d& start,
                         const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
                         const DistanceQuery& field) const;
+  // The same with points tied to planes as well (PlanePoint): their d_i is
+  // the distance to their plane and g_i its normal; n counts both kinds.
+  PoseRefinement Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
+                        const Matrix6d& prior_covariance, const Vector6d& start,
+                        const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
+                        const std::vector<PlanePoint>& plane_points, const DistanceQuery& field) const;
 
  private:
   double sigma_m_;

@@ -1,6 +1,7 @@
 #include "matching/ScanLikelihood.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace unimap::matching {
 
@@ -13,8 +14,17 @@ double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Is
                                      const std::vector<Eigen::Vector3f>& points_body,
                                      std::vector<Eigen::Vector3f>* scratch_points,
                                      std::vector<float>* scratch_distances) const {
+  return LogLikelihood(field, T_map_body, points_body, {}, scratch_points, scratch_distances);
+}
+
+double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
+                                     const std::vector<Eigen::Vector3f>& points_body,
+                                     const std::vector<PlanePoint>& plane_points,
+                                     std::vector<Eigen::Vector3f>* scratch_points,
+                                     std::vector<float>* scratch_distances) const {
   const int n = static_cast<int>(points_body.size());
-  if (n == 0) return 0.0;
+  const int total = n + static_cast<int>(plane_points.size());
+  if (total == 0) return 0.0;
   scratch_points->resize(points_body.size());
   scratch_distances->resize(points_body.size());
   const Eigen::Matrix3f R = T_map_body.linear().cast<float>();
@@ -26,7 +36,11 @@ double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Is
     const float d = std::min((*scratch_distances)[i], clamp_m_);
     sum_sq += d * d;
   }
-  return -static_cast<double>(sum_sq * inv_two_sigma_sq_) * effective_points_ / n;
+  for (const PlanePoint& q : plane_points) {
+    const float d = std::min(std::abs(q.normal_map.dot(R * q.p_body + t) + q.offset_m), clamp_m_);
+    sum_sq += d * d;
+  }
+  return -static_cast<double>(sum_sq * inv_two_sigma_sq_) * effective_points_ / total;
 }
 
 }  // namespace unimap::matching

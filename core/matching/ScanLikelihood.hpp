@@ -4,13 +4,14 @@
 #include <Eigen/Geometry>
 
 #include "matching/DistanceQuery.hpp"
+#include "matching/PlanePoint.hpp"
 
 namespace unimap::matching {
 
 // Log-likelihood of a scan at a pose in a distance map (the GPF's weight):
 //   log L = (effective_points / n) * sum_i -min(d_i, clamp)^2 / (2 sigma^2),
 // d_i the distance of point i, transformed by T_map_body, to the nearest
-// surface. Scaling to effective_points treats neighbouring returns as
+// surface; for points tied to a plane (PlanePoint), to that plane. Scaling to effective_points treats neighbouring returns as
 // correlated so that one scan does not make the weights degenerate.
 class ScanLikelihood {
  public:
@@ -19,6 +20,12 @@ class ScanLikelihood {
   // Scratch buffers are resized as needed (one set per thread).
   double LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
                        const std::vector<Eigen::Vector3f>& points_body,
+                       std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances) const;
+  // The same over the points measured in the field and those tied to planes
+  // (n = both counts).
+  double LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
+                       const std::vector<Eigen::Vector3f>& points_body,
+                       const std::vector<PlanePoint>& plane_points,
                        std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances) const;
 
  private:

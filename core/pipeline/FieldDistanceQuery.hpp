@@ -21,6 +21,11 @@ class FieldDistanceQuery final : public matching::DistanceQuery {
       for (int i = 0; i < n; ++i) out[i] = field.Distance(points_map[i]);
     }
   }
+  void Planes(const Eigen::Vector3f* points_map, int n, bool* out, Eigen::Vector3f* normals,
+              float* offsets_m) const override {
+    const map::DistanceField& field = *field_;
+    for (int i = 0; i < n; ++i) out[i] = field.PlaneAt(points_map[i], &normals[i], &offsets_m[i]);
+  }
   // Trilinear distances with their analytic gradients (whatever trilinear_ says).
   void DistancesAndGradients(const Eigen::Vector3f* points_map, int n, float* out,
                              Eigen::Vector3f* gradients_map) const override {

@@ -177,6 +177,27 @@ TEST(DistanceField, SignChangesNoSurfaceCanExplainInterpolateMagnitudes) {
   EXPECT_NEAR(SignedField(Crossing).DistanceTrilinear(V3(-0.3f, 1.0f, 2.9f), nullptr), 0.12f, 1e-4f);
 }
 
+TEST(DistanceField, PlanesGiveTheSignedHeightAboveTheCellsPlane) {
+  DistanceField field = LinearField();
+  EXPECT_FALSE(field.HasPlanes());
+  V3 normal;
+  float offset = 0.0f;
+  EXPECT_FALSE(field.PlaneAt(V3(-0.7f, 0.3f, 2.2f), &normal, &offset));  // no planes attached
+  CellPlanes planes(field.CellCount());
+  // Cell (0, 0, 0), centre (-0.75, 0.25, 2.25): a plane through (-0.75, 0.25, 2.15), normal +z.
+  planes.Set(0, V3::UnitZ(), 0.1f);
+  field.SetPlanes(std::move(planes));
+  EXPECT_TRUE(field.HasPlanes());
+  EXPECT_EQ(field.MemoryBytes(), field.CellCount() * (sizeof(std::uint16_t) + sizeof(std::uint32_t)));
+  const V3 p(-0.6f, 0.1f, 2.4f);  // same cell
+  ASSERT_TRUE(field.PlaneAt(p, &normal, &offset));
+  EXPECT_LT((normal - V3::UnitZ()).norm(), 1e-6f);
+  EXPECT_NEAR(normal.dot(p) + offset, 2.4f - 2.15f, 1e-4f);
+  EXPECT_FALSE(field.PlaneAt(V3(-0.2f, 0.3f, 2.2f), &normal, &offset));  // cell (1, 0, 0): none
+  EXPECT_FALSE(field.PlaneAt(V3(-1.2f, 0.3f, 2.2f), &normal, &offset));  // outside the box
+  EXPECT_THROW(field.SetPlanes(CellPlanes(7)), InputError);
+}
+
 TEST(DistanceField, InconsistentConstructionIsAnInputError) {
   EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, kClamp, std::vector<std::uint16_t>(59), 0),
                InputError);

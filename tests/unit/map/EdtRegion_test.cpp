@@ -95,5 +95,37 @@ TEST_F(EdtRegionTest, IncrementalUpdateFollowsAddedAndFreedVoxels) {
   EXPECT_FLOAT_EQ(field->Distance(V3(-0.75f, 0.95f, 1.05f)), 0.0f);
 }
 
+TEST(EdtRegion, PlanesReachPastTheEdgeOfASurfaceSeenOnlyInPart) {
+  // A floor at z = 0.02 seen from above for x < 0 only (its right half unseen).
+  DistanceMapOptions options;
+  options.resolution_m = 0.1;
+  options.clamp_distance_m = kClamp;
+  options.subvoxel_surfaces = true;
+  OccupancyTree tree(options);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> x(-1.0f, 0.0f);
+  std::uniform_real_distribution<float> y(-1.0f, 1.0f);
+  std::vector<V3> floor(8000);
+  for (V3& p : floor) p = V3(x(rng), y(rng), 0.02f);
+  tree.Insert(floor, V3(-0.5f, 0.0f, 1.0f));
+  const KeyBox box(tree.KeyOf(V3(-1.5f, -1.5f, -0.8f)), tree.KeyOf(V3(1.5f, 1.5f, 0.8f)));
+  const EdtRegion region(&tree.tree(), box, kClamp);
+  EXPECT_FALSE(region.Export(1)->HasPlanes());  // no surfaces, no planes
+  const std::shared_ptr<const DistanceField> field = region.Export(1, tree.surfaces());
+  ASSERT_TRUE(field->HasPlanes());
+  for (const V3& p : {V3(-0.5f, 0.3f, 0.12f), V3(0.3f, 0.0f, 0.02f), V3(0.4f, -0.2f, -0.1f)}) {
+    V3 normal;
+    float offset = 0.0f;
+    ASSERT_TRUE(field->PlaneAt(p, &normal, &offset)) << p.transpose();
+    EXPECT_GT(std::abs(normal.z()), 0.999f) << p.transpose();
+    EXPECT_NEAR(std::abs(normal.dot(p) + offset), std::abs(p.z() - 0.02f), 0.005f) << p.transpose();
+  }
+  // Beside the seen part the field measures to its edge, the plane does not.
+  EXPECT_GT(field->DistanceTrilinear(V3(0.3f, 0.0f, 0.02f), nullptr), 0.15f);
+  V3 normal;
+  float offset = 0.0f;
+  EXPECT_FALSE(field->PlaneAt(V3(1.4f, 0.0f, 0.5f), &normal, &offset));  // no surface in reach
+}
+
 }  // namespace
 }  // namespace unimap::map

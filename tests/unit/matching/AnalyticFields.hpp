@@ -77,4 +77,49 @@ class SphereField final : public DistanceQuery {
   float r_;
 };
 
+// A map that has seen only part of a surface: the floor z = 0 for x <= 1
+// (beyond it, distances are to its edge), a wall x = -2 and a wall y = -1.5.
+// Planes() gives the plane of the nearest of the three, as CellPlanes does.
+class PartlySeenFloorField final : public DistanceQuery {
+ public:
+  void Distances(const Eigen::Vector3f* p, int n, float* out) const override {
+    for (int i = 0; i < n; ++i) out[i] = Nearest(p[i], nullptr);
+  }
+  void Planes(const Eigen::Vector3f* p, int n, bool* out, Eigen::Vector3f* normals, float* offsets_m) const override {
+    for (int i = 0; i < n; ++i) {
+      int k = 0;
+      Nearest(p[i], &k);
+      out[i] = true;
+      normals[i] = Eigen::Vector3f::Unit(k == 0 ? 2 : k == 1 ? 0 : 1);
+      offsets_m[i] = k == 0 ? 0.0f : k == 1 ? 2.0f : 1.5f;
+    }
+  }
+  // Points on the whole floor (x in [-2, 3], also the unseen part) and on the walls, fixed seed.
+  static std::vector<Eigen::Vector3f> SampleScan(int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<Eigen::Vector3f> out;
+    for (int i = 0; i < n; ++i) {
+      const float a = u(rng);
+      const float b = u(rng);
+      switch (i % 3) {
+        case 0: out.emplace_back(-2.0f + 5.0f * a, -1.5f + 3.0f * b, 0.0f); break;  // floor
+        case 1: out.emplace_back(-2.0f, -1.5f + 3.0f * a, 2.0f * b); break;         // wall x = -2
+        default: out.emplace_back(-2.0f + 5.0f * a, -1.5f, 2.0f * b); break;        // wall y = -1.5
+      }
+    }
+    return out;
+  }
+
+ private:
+  // Distance to the nearest surface; *which (if not null): 0 floor, 1 wall x, 2 wall y.
+  static float Nearest(const Eigen::Vector3f& p, int* which) {
+    const float beyond = std::max(p.x() - 1.0f, 0.0f);
+    const float d[3] = {std::sqrt(p.z() * p.z() + beyond * beyond), std::abs(p.x() + 2.0f), std::abs(p.y() + 1.5f)};
+    const int k = static_cast<int>(std::min_element(d, d + 3) - d);
+    if (which != nullptr) *which = k;
+    return d[k];
+  }
+};
+
 }  // namespace unimap::matching::testing

@@ -107,6 +107,57 @@ TEST(PoseRefiner, InformationOfAPlaneIsExact) {
   EXPECT_EQ(r.mean, Vector6d::Zero());
 }
 
+TEST(PoseRefiner, PlanePointsRecoverAnOffsetWithNumericallyCheckedInformation) {
+  // Points on three tilted planes through the true pose's surroundings,
+  // tied to their planes; the prediction is off by a known error.
+  const Eigen::Isometry3d T_true = TrueRoomPose();
+  Vector6d error;
+  error << 0.04, -0.03, 0.05, 0.01, -0.02, 0.015;
+  const Eigen::Vector3f normals[3] = {Eigen::Vector3f(0.1f, 0.0f, 1.0f).normalized(),
+                                     Eigen::Vector3f(1.0f, 0.2f, 0.0f).normalized(),
+                                     Eigen::Vector3f(-0.1f, 1.0f, 0.2f).normalized()};
+  const float offsets[3] = {1.2f, -2.5f, 1.8f};
+  std::vector<PlanePoint> points;
+  const Eigen::Isometry3f T_body_map = T_true.inverse().cast<float>();
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3f u = normals[k].unitOrthogonal();
+    const Eigen::Vector3f v = normals[k].cross(u);
+    for (int i = 0; i < 40; ++i) {
+      const Eigen::Vector3f p_map = -offsets[k] * normals[k] + 0.1f * static_cast<float>(i % 8 - 4) * 3.0f * u +
+                                    0.5f * static_cast<float>(i / 8 - 2) * v;
+      points.push_back({T_body_map * p_map, normals[k], offsets[k]});
+    }
+  }
+  const testing::FloorField unused;  // no field points
+  const double sigma = 0.1, effective = 50.0;
+  const PoseRefiner refiner(sigma, 0.5, effective, 20);
+  const Eigen::Isometry3d T_predicted = Predicted(T_true, error);
+  const PoseRefinement r = refiner.Refine(T_predicted, Vector6d::Zero(), Matrix6d::Identity(), Vector6d::Zero(),
+                                          kAllDims, {}, points, unused);
+  ASSERT_TRUE(r.ok) << r.reason;
+  EXPECT_LT((r.mean - error).norm(), 1e-4);
+  // H = W sum J J' with J the residuals' derivatives by central differences,
+  // the rotation's for a perturbation local to the estimate, R(e) Exp(delta)
+  // (the refiner's convention, as for field points).
+  const Eigen::Isometry3d T_mean = estimation::ApplyPoseError(T_predicted, r.mean);
+  const double W = effective / (static_cast<double>(points.size()) * sigma * sigma);
+  Matrix6d H = Matrix6d::Zero();
+  for (const PlanePoint& q : points) {
+    Vector6d J;
+    for (int a = 0; a < 6; ++a) {
+      Vector6d step = Vector6d::Zero();
+      step(a) = 1e-5;
+      const auto residual = [&](const Vector6d& e) {
+        const Eigen::Vector3d p = estimation::ApplyPoseError(T_mean, e) * q.p_body.cast<double>();
+        return q.normal_map.cast<double>().dot(p) + q.offset_m;
+      };
+      J(a) = (residual(step) - residual(-step)) / 2e-5;
+    }
+    H += W * J * J.transpose();
+  }
+  EXPECT_LT((r.information - H).norm(), 1e-3 * H.norm()) << r.information << "\n\n" << H;
+}
+
 TEST(PoseRefiner, UnobservedDirectionsStayWithThePrior) {
   // A body 3 cm above the floor and 2 cm off in x: z is corrected to the
   // MAP of prior and likelihood, x (no gradient) returns to the prior mean.

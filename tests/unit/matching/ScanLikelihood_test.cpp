@@ -23,5 +23,28 @@ TEST(ScanLikelihood, MatchesClosedFormOnKnownGeometry) {
   EXPECT_NEAR(likelihood.LogLikelihood(room, up, floor, &sp, &sd), -50.0 * 0.25 / 0.02, 1e-3);
 }
 
+TEST(ScanLikelihood, PlanePointsMeasureToTheirPlane) {
+  // Field points on the floor plus points tied to the plane x = 2 (normal
+  // +x, offset -2); n counts both.
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);
+  const std::vector<Eigen::Vector3f> floor = {{0.0f, 0.5f, -2.0f}, {1.0f, -0.5f, -2.0f}};
+  std::vector<PlanePoint> wall;
+  for (int i = 0; i < 3; ++i) wall.push_back({Eigen::Vector3f(2.0f, 0.3f * static_cast<float>(i), 1.0f), Eigen::Vector3f::UnitX(), -2.0f});
+  const ScanLikelihood likelihood(0.1, 0.5, 50.0);
+  std::vector<Eigen::Vector3f> sp;
+  std::vector<float> sd;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  EXPECT_NEAR(likelihood.LogLikelihood(room, T, floor, wall, &sp, &sd), 0.0, 1e-9);
+  // 4 cm along x: the plane points are 4 cm off, the floor points are not;
+  // 3 m along y moves nothing off the plane (no edge to pull towards).
+  T.translation() = Eigen::Vector3d(0.04, 3.0, 0.0);
+  EXPECT_NEAR(likelihood.LogLikelihood(room, T, {}, wall, &sp, &sd), -50.0 * 0.04 * 0.04 / (2 * 0.01), 1e-4);
+  T.translation() = Eigen::Vector3d(0.04, 0.0, 0.0);
+  EXPECT_NEAR(likelihood.LogLikelihood(room, T, floor, wall, &sp, &sd), -50.0 / 5.0 * 3.0 * 0.04 * 0.04 / (2 * 0.01),
+              1e-4);
+  T.translation() = Eigen::Vector3d(-1.0, 0.0, 0.0);  // 1 m off the plane: clamped at 0.5 m
+  EXPECT_NEAR(likelihood.LogLikelihood(room, T, {}, wall, &sp, &sd), -50.0 * 0.25 / 0.02, 1e-3);
+}
+
 }  // namespace
 }  // namespace unimap::matching
