@@ -70,17 +70,13 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // (rotation RMSE fixed VLP-16 0.120 -> 0.230 deg, rotating Hokuyo 0.216
   // -> 0.343 deg, rotating VLP-16 0.159 -> 0.150 deg).
   o.gpf.refine_iterations = 0;
-  // Points whose cell at the prediction has a surface plane are measured
-  // against that plane (GpfOptions::point_to_plane): where the map has seen
-  // only part of a surface, distances to its voxels pull points sideways
-  // towards the seen part's edge. 60 s of tunnel in the true map, position /
-  // rotation RMSE: fixed VLP-16 0.020 / 0.078 -> 0.016 / 0.064, rotating
-  // VLP-16 0.018 / 0.091 -> 0.012 / 0.063 (0.3 m map: 0.074 / 0.172 ->
-  // 0.015 / 0.099), rotating Hokuyo 0.015 / 0.072 -> 0.011 / 0.054.
-  // Odometry keeps point to field: in its own growing map the full tunnel
-  // flight (rotating Hokuyo) went from ATE 0.49 to 5.75 m and the patio from
-  // 0.08 to 0.18 m.
-  o.gpf.point_to_plane = true;
+  // Point to plane (GpfOptions::point_to_plane, `unimap localize
+  // --point-to-plane`) stays off: in the true tunnel map it cut the 60 s
+  // position / rotation RMSE (fixed VLP-16 0.020 / 0.078 -> 0.016 / 0.064,
+  // rotating VLP-16 0.018 / 0.091 -> 0.012 / 0.063, rotating Hokuyo 0.015 /
+  // 0.072 -> 0.011 / 0.054) but not the full flights' position RMSE (fixed
+  // VLP-16 0.045 -> 0.053 m, rotating VLP-16 0.019 -> 0.020, rotating Hokuyo
+  // 0.020 -> 0.023; rotation 0.040 / 0.054 / 0.049 -> 0.036 / 0.049 / 0.042 deg).
   // Particles spread at least 3 cm and 0.01 rad, wider than the IMU's
   // prediction between two scans, so that their weights resolve the scan's
   // likelihood in a complete map instead of echoing Monte-Carlo noise (ESS

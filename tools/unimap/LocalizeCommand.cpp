@@ -37,6 +37,7 @@ struct LocalizeCliOptions {
   std::string initial_attitude; // "pose" or "gravity"; empty: pose for a ground-truth start, else gravity
   double map_resolution_m = 0.0;  // distance-map voxel (m); 0: ForPriorMap's (platform's, at most 0.1)
   double max_duration_s = 0.0;  // 0: the whole dataset
+  bool point_to_plane = false;  // points measured against their nearest surface plane (GpfOptions)
   int threads = 1;              // GPF threads
   bool quiet = false;           // no progress line
 };
@@ -145,6 +146,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     pipeline::LocalizerOptions localizer_options =
         pipeline::LocalizerOptions::ForPriorMap(CoreParameters::FromMap(platform.parameters));
     localizer_options.gpf.threads = options.threads;
+    localizer_options.gpf.point_to_plane = options.point_to_plane;
     const bool bt_map = std::filesystem::path(options.map_file).extension() == ".bt";
     if (options.map_resolution_m > 0.0) {
       if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");
@@ -244,6 +246,10 @@ void AddLocalizeCommand(CLI::App* app) {
                   "scan's downsampling voxel (default: the platform's distance_map_resolution_m, at most 0.1)")
       ->check(CLI::Range(0.01, 2.0));
   cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)");
+  cmd->add_flag("--point-to-plane", options->point_to_plane,
+                "Measure each scan point against the plane of the map surface nearest to it at the prediction "
+                "instead of the distance field (helps in maps that hold only part of a surface; "
+                "docs/localization.md)");
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->callback([options]() {
