@@ -290,7 +290,7 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
 
   std::shared_ptr<const DistanceField> field =
       region != nullptr
-          ? region->Export(sequence_, surfaces)
+          ? region->Export(sequence_, surfaces, options_.cell_planes)
           : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m),
                                                   sequence_);
   const Clock::time_point exported = Clock::now();

@@ -36,6 +36,9 @@ struct DistanceMapOptions {
                                   // behind it, instead of to the voxel centre (up to half a
                                   // voxel off); ~80 bytes per occupied voxel. Voxels without
                                   // returns (.bt priors) keep the centre
+  bool cell_planes = false;  // with subvoxel_surfaces: fields also carry the plane of each
+                             // cell's nearest surface element (CellPlanes, 4 bytes per cell),
+                             // for GpfOptions::point_to_plane
 
   // True when every field is in range; otherwise false with the reason
   // (naming the field) in *why when why is not null.

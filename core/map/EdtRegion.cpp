@@ -39,7 +39,8 @@ EdtRegion::~EdtRegion() = default;
 void EdtRegion::Update() { edt_->update(/*updateRealDist=*/true); }
 
 std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
-                                                      const SurfacePoints* surfaces) const {
+                                                      const SurfacePoints* surfaces,
+                                                      bool with_planes) const {
   const Eigen::Vector3i dims = box_.Dims();
   std::vector<std::uint16_t> cells(box_.CellCount());
   const double half_voxel_m = 0.5 * tree_->getResolution();
@@ -63,10 +64,10 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
     }
     return make_field(DistanceField::Encoding::kUnsigned);
   }
-  CellPlanes planes(cells.size());
-  FillSigned(*surfaces, &cells, &planes);
+  CellPlanes planes(with_planes ? cells.size() : 0);
+  FillSigned(*surfaces, &cells, with_planes ? &planes : nullptr);
   std::shared_ptr<DistanceField> field = make_field(DistanceField::Encoding::kSigned);
-  field->SetPlanes(std::move(planes));
+  if (with_planes) field->SetPlanes(std::move(planes));
   return field;
 }
 
@@ -122,7 +123,7 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
             if (seen.element != nullptr) {
               const Eigen::Vector3f centre = min_centre + cell.cast<float>() * resolution_m;
               distance_m = surfaces.SignedDistance(*seen.element, centre);
-              if (seen.element->planar) {
+              if (planes != nullptr && seen.element->planar) {
                 planes->Set(index, seen.element->normal,
                             seen.element->normal.dot(centre - seen.element->mean_m));
               }

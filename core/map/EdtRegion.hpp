@@ -39,17 +39,18 @@ class EdtRegion {
   // nearest occupied voxel (by centre, as the transform finds it) has a
   // surface element hold the signed distance to that element instead
   // (SurfacePoints::SignedDistance); the others keep the centre distance.
-  // With surfaces the field also carries the plane of each cell's nearest
-  // planar element (DistanceField::SetPlanes).
+  // With surfaces and with_planes the field also carries the plane of each
+  // cell's nearest planar element (DistanceField::SetPlanes).
   std::shared_ptr<const DistanceField> Export(std::uint64_t sequence,
-                                              const SurfacePoints* surfaces = nullptr) const;
+                                              const SurfacePoints* surfaces = nullptr,
+                                              bool with_planes = false) const;
 
   const KeyBox& box() const { return box_; }
   std::size_t CellCount() const { return box_.CellCount(); }
 
  private:
   // Export's cells with surfaces (kSigned codes, in the box's x-y-z order).
-  // planes receives the plane of each cell's nearest planar element.
+  // planes (if not null) receives the plane of each cell's nearest planar element.
   void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells,
                   CellPlanes* planes) const;
 

@@ -147,6 +147,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
         pipeline::LocalizerOptions::ForPriorMap(CoreParameters::FromMap(platform.parameters));
     localizer_options.gpf.threads = options.threads;
     localizer_options.gpf.point_to_plane = options.point_to_plane;
+    localizer_options.map.cell_planes = options.point_to_plane;  // the planes it ties points to
     const bool bt_map = std::filesystem::path(options.map_file).extension() == ".bt";
     if (options.map_resolution_m > 0.0) {
       if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");

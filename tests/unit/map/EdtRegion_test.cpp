@@ -111,7 +111,8 @@ TEST(EdtRegion, PlanesReachPastTheEdgeOfASurfaceSeenOnlyInPart) {
   const KeyBox box(tree.KeyOf(V3(-1.5f, -1.5f, -0.8f)), tree.KeyOf(V3(1.5f, 1.5f, 0.8f)));
   const EdtRegion region(&tree.tree(), box, kClamp);
   EXPECT_FALSE(region.Export(1)->HasPlanes());  // no surfaces, no planes
-  const std::shared_ptr<const DistanceField> field = region.Export(1, tree.surfaces());
+  EXPECT_FALSE(region.Export(1, tree.surfaces())->HasPlanes());  // not asked for
+  const std::shared_ptr<const DistanceField> field = region.Export(1, tree.surfaces(), /*with_planes=*/true);
   ASSERT_TRUE(field->HasPlanes());
   for (const V3& p : {V3(-0.5f, 0.3f, 0.12f), V3(0.3f, 0.0f, 0.02f), V3(0.4f, -0.2f, -0.1f)}) {
     V3 normal;
