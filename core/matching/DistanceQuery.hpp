@@ -34,11 +34,8 @@ class DistanceQuery {
   // The plane of the surface nearest to each of n points (map frame): out[i]
   // false when there is none (the default: fields without planes), else
   // normals[i] . x + offsets[i] is the signed height of x above it.
-  virtual void Planes(const Eigen::Vector3f* points_map, int n, bool* out, Eigen::Vector3f* normals,
-                      float* offsets_m) const {
-    (void)points_map;
-    (void)normals;
-    (void)offsets_m;
+  virtual void Planes(const Eigen::Vector3f* /*points_map*/, int n, bool* out, Eigen::Vector3f* /*normals*/,
+                      float* /*offsets_m*/) const {
     for (int i = 0; i < n; ++i) out[i] = false;
   }
   // Finite-difference step of the default DistancesAndGradients (m).

@@ -79,16 +79,17 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
   };
   Scratch s;
   const auto cost = [&](const Vector6d& e) {
-    Transform(estimation::ApplyPoseError(T_map_body_predicted, e), points_body, &s);
+    const Eigen::Isometry3d T = estimation::ApplyPoseError(T_map_body_predicted, e);
+    Transform(T, points_body, &s);
     field.Distances(s.points_map.data(), n, s.distances.data());
     double sum_sq = 0.0;
     for (int i = 0; i < n; ++i) {
       const double di = std::min(s.distances[static_cast<std::size_t>(i)], clamp);
       sum_sq += di * di;
     }
-    const Eigen::Isometry3f T = estimation::ApplyPoseError(T_map_body_predicted, e).cast<float>();
+    const Eigen::Isometry3f Tf = T.cast<float>();
     for (const PlanePoint& q : plane_points) {
-      const double di = std::min(std::abs(q.normal_map.dot(T * q.p_body) + q.offset_m), clamp);
+      const double di = std::min(std::abs(q.SignedDistance(Tf * q.p_body)), clamp);
       sum_sq += di * di;
     }
     return prior_cost(e) + 0.5 * w * sum_sq;
@@ -121,7 +122,7 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
     // Plane points: signed residual r = n . (R p + t) + o, gradient n.
     const Eigen::Isometry3f Tf = T.cast<float>();
     for (const PlanePoint& q : plane_points) {
-      const double ri = q.normal_map.dot(Tf * q.p_body) + q.offset_m;
+      const double ri = q.SignedDistance(Tf * q.p_body);
       if (!(std::abs(ri) < clamp_m_)) {
         sum_sq += clamp_m_ * clamp_m_;
         continue;

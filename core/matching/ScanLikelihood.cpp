@@ -37,7 +37,7 @@ double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Is
     sum_sq += d * d;
   }
   for (const PlanePoint& q : plane_points) {
-    const float d = std::min(std::abs(q.normal_map.dot(R * q.p_body + t) + q.offset_m), clamp_m_);
+    const float d = std::min(std::abs(q.SignedDistance(R * q.p_body + t)), clamp_m_);
     sum_sq += d * d;
   }
   return -static_cast<double>(sum_sq * inv_two_sigma_sq_) * effective_points_ / total;

@@ -11,8 +11,9 @@ namespace unimap::matching {
 // Log-likelihood of a scan at a pose in a distance map (the GPF's weight):
 //   log L = (effective_points / n) * sum_i -min(d_i, clamp)^2 / (2 sigma^2),
 // d_i the distance of point i, transformed by T_map_body, to the nearest
-// surface; for points tied to a plane (PlanePoint), to that plane. Scaling to effective_points treats neighbouring returns as
-// correlated so that one scan does not make the weights degenerate.
+// surface (for points tied to a plane, PlanePoint, to that plane). Scaling
+// to effective_points treats neighbouring returns as correlated so that one
+// scan does not make the weights degenerate.
 class ScanLikelihood {
  public:
   ScanLikelihood(double sigma_m, double clamp_m, double effective_points);
