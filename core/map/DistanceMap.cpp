@@ -22,14 +22,14 @@ double Seconds(Clock::time_point from, Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
-DistanceMapOptions ValidOptions(DistanceMapOptions options, double resolution_m) {
+}  // namespace
+
+DistanceMapOptions DistanceMap::ValidOptions(DistanceMapOptions options, double resolution_m) {
   options.resolution_m = resolution_m;
   std::string why;
   if (!options.IsValid(&why)) throw ConfigError("", 0, "distance_map", why);
   return options;
 }
-
-}  // namespace
 
 DistanceMap::DistanceMap(const DistanceMapOptions& options)
     : DistanceMap(std::make_unique<OccupancyTree>(ValidOptions(options, options.resolution_m)),
@@ -44,42 +44,6 @@ DistanceMap::DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapO
           static_cast<float>(options_.clamp_distance_m))) {
   distances_on_ = options_.compute_distances;
   worker_ = std::thread([this] { WorkerLoop(); });
-}
-
-std::unique_ptr<DistanceMap> DistanceMap::FromOctree(std::unique_ptr<octomap::OcTree> tree,
-                                                     const DistanceMapOptions& options,
-                                                     const Eigen::Vector3f& centre_map) {
-  if (tree == nullptr) throw InputError("DistanceMap::FromOctree: null octree");
-  const DistanceMapOptions valid = ValidOptions(options, tree->getResolution());
-  auto occupancy = std::make_unique<OccupancyTree>(std::move(tree), valid);
-  std::unique_ptr<DistanceMap> map(new DistanceMap(std::move(occupancy), valid));
-  map->SetCenter(centre_map);
-  return map;
-}
-
-std::unique_ptr<DistanceMap> DistanceMap::LoadBt(const std::filesystem::path& path,
-                                                 const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& centre_map) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError("cannot read octree '" + path.string() + "': no such file");
-  }
-  auto tree = std::make_unique<octomap::OcTree>(0.1);  // readBinary sets the file's resolution
-  if (!tree->readBinary(path.string())) {
-    throw InputError("cannot read octree '" + path.string() + "': not a valid OctoMap .bt file");
-  }
-  return FromOctree(std::move(tree), options, centre_map);
-}
-
-std::unique_ptr<DistanceMap> DistanceMap::FromPoints(const std::vector<Eigen::Vector3f>& points_map,
-                                                     const DistanceMapOptions& options,
-                                                     const Eigen::Vector3f& centre_map) {
-  const DistanceMapOptions valid = ValidOptions(options, options.resolution_m);
-  auto occupancy = std::make_unique<OccupancyTree>(valid);
-  occupancy->MarkOccupied(points_map);
-  std::unique_ptr<DistanceMap> map(new DistanceMap(std::move(occupancy), valid));
-  map->SetCenter(centre_map);
-  return map;
 }
 
 DistanceMap::~DistanceMap() {

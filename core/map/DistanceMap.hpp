@@ -108,6 +108,8 @@ class DistanceMap : public ScanMap {
   };
 
   DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapOptions& options);
+  // options with resolution_m set; throws ConfigError when they are invalid.
+  static DistanceMapOptions ValidOptions(DistanceMapOptions options, double resolution_m);
   void CheckPosition(const Eigen::Vector3f& p_map, const char* what) const;
   void Enqueue(Job job);
   void WorkerLoop();

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "estimation/MakeMotionPrior.hpp"
 #include "estimation/So3.hpp"
-#include "estimation/StaticInitializer.hpp"
 #include "matching/VoxelDownsampler.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
+#include "pipeline/InitialState.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/LineScan.hpp"
 
@@ -156,28 +158,12 @@ std::vector<ScanPose> Localizer::TakePoses() {
 
 void Localizer::TryInitialize() {
   if (init_imu_.back().time_s - init_imu_.front().time_s < options_.static_init_s) return;
-  estimation::StaticAlignmentOptions align_options;
-  align_options.min_samples = 2;
-  const estimation::StaticAlignment alignment = estimation::AlignFromStatic(init_imu_, align_options);
-  estimation::NavState state;
-  state.time_s = init_imu_.back().time_s;
-  if (alignment.ok) {
-    state.q_world_body = alignment.q_world_body;
-    state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
-  } else if (stats_.messages.size() < kMaxMessages) {
-    stats_.messages.push_back("initial alignment: " + alignment.reason +
-                              (initial_pose_ ? "; attitude from the given pose" : "; starting level"));
+  InitialState start = InitialStateFromWindow(init_imu_, initial_pose_, options_);
+  if (start.attitude) stats_.initial_attitude = start.attitude;
+  for (std::string& note : start.notes) {
+    if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(std::move(note));
   }
-  if (initial_pose_) {
-    const estimation::PoseStart start =
-        estimation::PlaceAtPose(alignment, *initial_pose_, options_.initial_attitude, options_.eskf.gravity_m_s2,
-                                options_.max_initial_accel_bias_m_s2, &state);
-    stats_.initial_attitude = start.attitude;
-    if (!start.note.empty() && stats_.messages.size() < kMaxMessages) {
-      stats_.messages.push_back("initial pose: " + start.note);
-    }
-  }
-  eskf_.Initialize(state);
+  eskf_.Initialize(start.state);
   eskf_.Propagate(init_imu_.back());
   init_imu_.clear();
   init_imu_.shrink_to_fit();
