@@ -150,11 +150,8 @@ bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* norma
   const Eigen::Vector3f f = (p_map - origin_m_) * inv_resolution_;
   if (!((f.array() >= 0.0f).all() && (f.array() < dims_f_.array()).all())) return false;
   const Eigen::Vector3i cell = f.cast<int>();
-  const std::size_t index = static_cast<std::size_t>(cell.x()) * stride_x_ +
-                            static_cast<std::size_t>(cell.y()) * stride_y_ +
-                            static_cast<std::size_t>(cell.z());
   float centre_height_m = 0.0f;
-  if (!planes_.Get(index, normal, &centre_height_m)) return false;
+  if (!planes_.Get(CellIndex(cell), normal, &centre_height_m)) return false;
   // height(x) = h_c + n . (x - c) = n . x + (h_c - n . c).
   *offset_m = centre_height_m - normal->dot(CellCentre(cell));
   return true;
@@ -166,10 +163,7 @@ float DistanceField::CellDistance(const Eigen::Vector3i& cell) const {
 
 float DistanceField::CellValue(const Eigen::Vector3i& cell) const {
   if ((cell.array() < 0).any() || (cell.array() >= dims_.array()).any()) return clamp_m_;
-  const std::size_t index = static_cast<std::size_t>(cell.x()) * stride_x_ +
-                            static_cast<std::size_t>(cell.y()) * stride_y_ +
-                            static_cast<std::size_t>(cell.z());
-  return static_cast<float>(cells_[index] >> shift_) * step_m_ - offset_m_;
+  return static_cast<float>(cells_[CellIndex(cell)] >> shift_) * step_m_ - offset_m_;
 }
 
 Eigen::Vector3f DistanceField::CellCentre(const Eigen::Vector3i& cell) const {

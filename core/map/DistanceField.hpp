@@ -123,6 +123,12 @@ class DistanceField {
   }
 
  private:
+  // Index of an in-grid cell in cells_ (and planes_).
+  std::size_t CellIndex(const Eigen::Vector3i& cell) const {
+    return static_cast<std::size_t>(cell.x()) * stride_x_ + static_cast<std::size_t>(cell.y()) * stride_y_ +
+           static_cast<std::size_t>(cell.z());
+  }
+
   Eigen::Vector3f origin_m_ = Eigen::Vector3f::Zero();
   Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();
   Eigen::Vector3f dims_f_ = Eigen::Vector3f::Zero();  // dims_ as float, for the bounds test

@@ -159,7 +159,7 @@ std::vector<ScanPose> Localizer::TakePoses() {
 void Localizer::TryInitialize() {
   if (init_imu_.back().time_s - init_imu_.front().time_s < options_.static_init_s) return;
   InitialState start = InitialStateFromWindow(init_imu_, initial_pose_, options_);
-  if (start.attitude) stats_.initial_attitude = start.attitude;
+  stats_.initial_attitude = start.attitude;
   for (std::string& note : start.notes) {
     if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(std::move(note));
   }
