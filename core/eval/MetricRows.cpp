@@ -25,6 +25,8 @@ std::string Vector(const Eigen::Vector3d& v) {
 std::vector<MetricRow> DescribeMetrics(const TrajectoryMetrics& m) {
   return {
       {"ate_rmse_m", Fixed(m.ate_rmse_m), "position RMSE after SE(3) Umeyama alignment (no scale), m"},
+      {"trajectory_scale", Optional(m.trajectory_scale),
+       "estimate size / truth size (1 / scale of the Sim(3) Umeyama alignment); < 1: travel under-estimated"},
       {"path_length_m", Fixed(m.path_length_m), "truth path length over the associated span, m"},
       {"drift_percent", Optional(m.drift_percent), "100 x final position error / path length (start-anchored), %"},
       {"max_abs_error_m", Vector(m.max_abs_error_m), "max |position error| per axis [x, y, z] (start-anchored), m"},

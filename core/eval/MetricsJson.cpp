@@ -23,6 +23,7 @@ const std::vector<std::pair<std::string, Formatter>>& Fields() {
   using M = TrajectoryMetrics;
   static const std::vector<std::pair<std::string, Formatter>> fields = {
       {"ate_rmse_m", [](const M& m) { return JsonNumber(m.ate_rmse_m); }},
+      {"trajectory_scale", [](const M& m) { return Optional(m.trajectory_scale); }},
       {"path_length_m", [](const M& m) { return JsonNumber(m.path_length_m); }},
       {"drift_percent", [](const M& m) { return Optional(m.drift_percent); }},
       {"max_abs_error_m", [](const M& m) { return Vector(m.max_abs_error_m); }},

@@ -16,6 +16,9 @@ namespace unimap::eval {
 // (path length zero, or shorter than one RPE segment); they are never zero-filled.
 struct TrajectoryMetrics {
   double ate_rmse_m = 0.0;     // RMSE of positions after SE(3) Umeyama alignment (no scale)
+  std::optional<double> trajectory_scale;  // the estimate's size relative to the truth's: 1 / c of the
+                                           // Sim(3) Umeyama alignment (< 1: travel under-estimated);
+                                           // empty when the estimate or the truth does not move
   double path_length_m = 0.0;  // truth path length over the associated time span
   std::optional<double> drift_percent;              // 100 |e_p(last)| / path_length_m, start-anchored
   Eigen::Vector3d max_abs_error_m = Eigen::Vector3d::Zero();         // max_k |e_p(k)| per axis x, y, z

@@ -188,6 +188,23 @@ TEST(TrajectoryEvaluationTest, ShortPathHasNoRpeAndStationaryPathNoDrift) {
   EXPECT_EQ(m.path_length_m, 0.0);
   EXPECT_FALSE(m.drift_percent.has_value());
   EXPECT_FALSE(m.rot_drift_deg_per_m.has_value());
+  EXPECT_FALSE(m.trajectory_scale.has_value());
+}
+
+TEST(TrajectoryEvaluationTest, AnEstimateThatTravelsLessHasItsScale) {
+  // The helix shrunk to 97 % about a point and moved: the rigid ATE sees the
+  // shrinkage, trajectory_scale measures it.
+  std::vector<StampedPose> estimate = Helix();
+  for (StampedPose& p : estimate) {
+    p.T_map_body.translation() = 0.97 * (p.T_map_body.translation() - Eigen::Vector3d(3, 1, 0)) + Eigen::Vector3d(5, -2, 1);
+  }
+  const TrajectoryMetrics m = EvaluateTrajectory(estimate, Helix()).metrics;
+  ASSERT_TRUE(m.trajectory_scale.has_value());
+  EXPECT_NEAR(*m.trajectory_scale, 0.97, 1e-9);
+  EXPECT_GT(m.ate_rmse_m, 0.1);
+  const TrajectoryMetrics same = EvaluateTrajectory(Helix(), Helix()).metrics;
+  ASSERT_TRUE(same.trajectory_scale.has_value());
+  EXPECT_NEAR(*same.trajectory_scale, 1.0, 1e-12);
 }
 
 }  // namespace

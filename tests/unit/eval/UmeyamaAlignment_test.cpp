@@ -56,8 +56,55 @@ TEST(UmeyamaAlignmentTest, ResidualOfAScaledLineIsItsSpread) {
   EXPECT_NEAR(AlignRigid(source, target).rmse_m, 0.01 * std_x, 1e-12);
 }
 
+TEST(UmeyamaAlignmentTest, SimilarityRecoversARandomScaledTransform) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(-20.0, 20.0);
+  std::uniform_real_distribution<double> scales(0.2, 5.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::Quaterniond(Eigen::Vector4d(uniform(rng), uniform(rng), uniform(rng), uniform(rng)).normalized())
+                     .toRotationMatrix();
+    T.translation() = Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
+    const double c = scales(rng);
+    std::vector<Eigen::Vector3d> source;
+    std::vector<Eigen::Vector3d> target;
+    for (int i = 0; i < 50; ++i) {
+      source.emplace_back(uniform(rng), uniform(rng), uniform(rng));
+      target.push_back(c * (T.linear() * source.back()) + T.translation());
+    }
+    const std::optional<SimilarityAlignment> result = AlignSimilarity(source, target);
+    ASSERT_TRUE(result.has_value());
+    EXPECT_NEAR(result->scale, c, 1e-9 * c);
+    EXPECT_LT((result->T_target_source.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT(result->rmse_m, 1e-8);
+  }
+}
+
+TEST(UmeyamaAlignmentTest, SimilarityOfAScaledLineFitsExactly) {
+  // The line the rigid fit leaves a residual on (above): scale 1.01, no residual.
+  std::vector<Eigen::Vector3d> source;
+  std::vector<Eigen::Vector3d> target;
+  for (int i = 0; i <= 10; ++i) {
+    source.emplace_back(i, 0, 0);
+    target.emplace_back(1.01 * i + 2.0, 0, 0);
+  }
+  const std::optional<SimilarityAlignment> result = AlignSimilarity(source, target);
+  ASSERT_TRUE(result.has_value());
+  EXPECT_NEAR(result->scale, 1.01, 1e-12);
+  EXPECT_NEAR(result->T_target_source.translation().x(), 2.0, 1e-12);
+  EXPECT_LT(result->rmse_m, 1e-12);
+}
+
+TEST(UmeyamaAlignmentTest, SimilarityHasNoScaleForAPointOrOntoAPoint) {
+  const std::vector<Eigen::Vector3d> still(5, Eigen::Vector3d(1.0, 2.0, 3.0));
+  const std::vector<Eigen::Vector3d> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  EXPECT_FALSE(AlignSimilarity(still, line).has_value());
+  EXPECT_FALSE(AlignSimilarity(line, still).has_value());
+}
+
 TEST(UmeyamaAlignmentTest, RejectsMismatchedOrEmptyInput) {
   EXPECT_THROW(AlignRigid({}, {}), InputError);
+  EXPECT_THROW(AlignSimilarity({{0, 0, 0}}, {}), InputError);
   EXPECT_THROW(AlignRigid({Eigen::Vector3d::Zero()}, {}), InputError);
 }
 
