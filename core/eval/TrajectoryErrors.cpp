@@ -31,6 +31,7 @@ TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& associatio
     true_positions.push_back(pair.T_true_body.translation());
   }
   errors.alignment = AlignRigid(est_positions, true_positions);
+  errors.similarity = AlignSimilarity(est_positions, true_positions);
 
   // T_true_est: places the estimate's first pose on the truth's (see Anchor).
   const Eigen::Isometry3d T_true_est = AnchorTransform(pairs.front().T_true_body, pairs.front().T_est_body, anchor);

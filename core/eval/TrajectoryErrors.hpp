@@ -1,6 +1,7 @@
 #pragma once
 // Per-pose errors of an associated estimate against the truth (the series
 // behind the metrics and the paper's error plots; docs/evaluation.md).
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -38,6 +39,7 @@ struct PoseError {
 struct TrajectoryErrors {
   std::vector<PoseError> poses;  // one per associated pair, same order
   RigidAlignment alignment;      // estimate positions onto truth positions (ATE)
+  std::optional<SimilarityAlignment> similarity;  // the same with scale (empty: no positive scale)
 };
 
 // Computes every PoseError; requires at least one pair (throws InputError otherwise).

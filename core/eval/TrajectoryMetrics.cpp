@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "eval/UmeyamaAlignment.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::eval {
@@ -17,22 +16,6 @@ double PathLength(const std::vector<StampedPose>& poses) {
     length += (poses[k].T_map_body.translation() - poses[k - 1].T_map_body.translation()).norm();
   }
   return length;
-}
-
-// 1 / c of the similarity alignment of the estimate's positions onto the
-// truth's (empty when it has no positive scale).
-std::optional<double> TrajectoryScale(const TrajectoryAssociation& association) {
-  std::vector<Eigen::Vector3d> est_positions;
-  std::vector<Eigen::Vector3d> true_positions;
-  est_positions.reserve(association.pairs.size());
-  true_positions.reserve(association.pairs.size());
-  for (const AssociatedPose& pair : association.pairs) {
-    est_positions.push_back(pair.T_est_body.translation());
-    true_positions.push_back(pair.T_true_body.translation());
-  }
-  const std::optional<SimilarityAlignment> similarity = AlignSimilarity(est_positions, true_positions);
-  if (!similarity) return std::nullopt;
-  return 1.0 / similarity->scale;
 }
 
 }  // namespace
@@ -55,7 +38,7 @@ TrajectoryMetrics ComputeTrajectoryMetrics(const TrajectoryAssociation& associat
 
   // ATE: sqrt(1/n sum |R p_est(k) + t - p_true(k)|^2) at the Umeyama optimum.
   m.ate_rmse_m = errors.alignment.rmse_m;
-  m.trajectory_scale = TrajectoryScale(association);
+  if (errors.similarity) m.trajectory_scale = 1.0 / errors.similarity->scale;
   m.path_length_m = PathLength(association.truth_span);
 
   Eigen::Vector3d sum_abs_rot = Eigen::Vector3d::Zero();
