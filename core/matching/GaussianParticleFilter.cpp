@@ -75,8 +75,13 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
   result.points_used = static_cast<int>(points.size());
   std::vector<PlanePoint> plane_points;
   if (options_.point_to_plane) plane_points = TieToPlanes(T_map_body_predicted, field, &points);
+  int unmeasured = 0;  // planes_only: the points left without a plane
+  if (options_.planes_only) {
+    unmeasured = static_cast<int>(points.size());
+    points.clear();
+  }
   if (points.empty() && plane_points.empty()) {
-    result.reason = "no points to match";
+    result.reason = unmeasured > 0 ? "no point has a plane" : "no points to match";
     return result;
   }
   const std::vector<int> dims = ActiveDims(options_.planar);
@@ -119,7 +124,8 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
       const auto i = static_cast<std::size_t>(k);
       const Eigen::Isometry3d T_particle = estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]);
       ws.log_weights[i] =
-          likelihood.LogLikelihood(field, T_particle, points, plane_points, &scratch_points, &scratch_distances);
+          likelihood.LogLikelihood(field, T_particle, points, plane_points, &scratch_points, &scratch_distances,
+                                   unmeasured);
     }
   };
   if (ws.arena) {
@@ -174,7 +180,8 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points,
                               options_.refine_iterations);
     const PoseRefinement refined =
-        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, plane_points, field);
+        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, plane_points, field,
+                       unmeasured);
     if (refined.ok) {
       result.refined = true;
       result.refine_iterations = refined.iterations;

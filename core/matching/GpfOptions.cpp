@@ -23,6 +23,10 @@ bool GpfOptions::IsValid(std::string* why) const {
     *why = "sigma floors must be >= 0 and min_information_ratio in (0, 1)";
     return false;
   }
+  if (planes_only && !point_to_plane) {
+    *why = "planes_only needs point_to_plane";
+    return false;
+  }
   return true;
 }
 

@@ -23,6 +23,8 @@ struct GpfOptions {
                                          // (DistanceQuery::Planes) are measured against that plane by
                                          // every particle and the refinement (PlanePoint), the others
                                          // against the field
+  bool planes_only = false;              // with point_to_plane: points without a plane are not measured
+                                         // at all (they still count in the scan's n: ScanLikelihood)
   int threads = 1;                       // particles weighted in parallel (TBB)
   std::uint64_t seed = 1;                // sampling seed (deterministic per scan sequence)
 

@@ -46,15 +46,16 @@ PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted
                                    const std::vector<int>& active_dims,
                                    const std::vector<Eigen::Vector3f>& points_body,
                                    const std::vector<PlanePoint>& plane_points,
-                                   const DistanceQuery& field) const {
+                                   const DistanceQuery& field, int unmeasured_points) const {
   PoseRefinement out;
   const int n = static_cast<int>(points_body.size());
-  const int total = n + static_cast<int>(plane_points.size());
+  const int measured = n + static_cast<int>(plane_points.size());
   const int d = static_cast<int>(active_dims.size());
-  if (total == 0 || d == 0) {
-    out.reason = total == 0 ? "no points to match" : "no active dimension";
+  if (measured == 0 || d == 0) {
+    out.reason = measured == 0 ? "no points to match" : "no active dimension";
     return out;
   }
+  const int total = measured + unmeasured_points;
   // Prior information on the active dimensions.
   Eigen::MatrixXd P(d, d);
   for (int r = 0; r < d; ++r) {

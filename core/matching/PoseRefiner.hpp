@@ -49,11 +49,13 @@ class PoseRefiner {
                         const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
                         const DistanceQuery& field) const;
   // The same with points tied to planes as well (PlanePoint): their d_i is
-  // the distance to their plane and g_i its normal; n counts both kinds.
+  // the distance to their plane and g_i its normal; n counts both kinds and
+  // unmeasured_points (as in ScanLikelihood).
   PoseRefinement Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
                         const Matrix6d& prior_covariance, const Vector6d& start,
                         const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
-                        const std::vector<PlanePoint>& plane_points, const DistanceQuery& field) const;
+                        const std::vector<PlanePoint>& plane_points, const DistanceQuery& field,
+                        int unmeasured_points = 0) const;
 
  private:
   double sigma_m_;

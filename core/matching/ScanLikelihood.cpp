@@ -21,10 +21,11 @@ double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Is
                                      const std::vector<Eigen::Vector3f>& points_body,
                                      const std::vector<PlanePoint>& plane_points,
                                      std::vector<Eigen::Vector3f>* scratch_points,
-                                     std::vector<float>* scratch_distances) const {
+                                     std::vector<float>* scratch_distances, int unmeasured_points) const {
   const int n = static_cast<int>(points_body.size());
-  const int total = n + static_cast<int>(plane_points.size());
-  if (total == 0) return 0.0;
+  const int measured = n + static_cast<int>(plane_points.size());
+  if (measured == 0) return 0.0;
+  const int total = measured + unmeasured_points;
   scratch_points->resize(points_body.size());
   scratch_distances->resize(points_body.size());
   const Eigen::Matrix3f R = T_map_body.linear().cast<float>();

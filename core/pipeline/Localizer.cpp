@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -245,7 +246,11 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const matching::GpfResult match =
-        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body, FieldDistanceQuery(field, options_.trilinear_distance));
+        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
+                   FieldDistanceQuery(field, options_.trilinear_distance,
+                                      options_.neighbourhood_planes
+                                          ? std::optional<map::NeighbourhoodPlaneOptions>(options_.neighbourhood_plane)
+                                          : std::nullopt));
     if (match.ok) {
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       if (update.applied) {

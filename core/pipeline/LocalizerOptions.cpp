@@ -21,6 +21,16 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     return false;
   }
   if (!motion.IsValid(why)) return false;
+  if (neighbourhood_planes) {
+    if (!neighbourhood_plane.IsValid(&inner)) {
+      *why = "neighbourhood_plane: " + inner;
+      return false;
+    }
+    if (!gpf.point_to_plane) {
+      *why = "neighbourhood_planes needs gpf.point_to_plane";
+      return false;
+    }
+  }
   if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
       !(max_scan_latency_s > 0.0) || !(max_initial_accel_bias_m_s2 > 0.0)) {
     *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
@@ -50,6 +60,12 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // patio 0.22 -> 0.08 m, corridor 0.58 -> 0.20 m, tunnel 0.58 -> 0.54 m.
   o.gpf.refine_iterations = 5;
   return o;
+}
+
+void LocalizerOptions::UsePlaneMatching() {
+  neighbourhood_planes = true;
+  gpf.point_to_plane = true;
+  gpf.planes_only = true;
 }
 
 LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {

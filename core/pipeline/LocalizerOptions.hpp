@@ -5,6 +5,7 @@
 #include "estimation/MotionPriorOptions.hpp"
 #include "estimation/StaticInitializer.hpp"
 #include "map/DistanceMapOptions.hpp"
+#include "map/NeighbourhoodPlane.hpp"
 #include "matching/GpfOptions.hpp"
 #include "unimap/CoreParameters.hpp"
 
@@ -27,11 +28,23 @@ struct LocalizerOptions {
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)
+  bool neighbourhood_planes = false;  // point to plane with planes fitted to the map's surface cells
+                                      // around each point (FitNeighbourhoodPlane) instead of the
+                                      // field's cell planes; needs gpf.point_to_plane
+  map::NeighbourhoodPlaneOptions neighbourhood_plane;  // the fit, with neighbourhood_planes
   bool wait_for_map = true;         // wait for each map insertion to be published before matching on:
                                     // offline runs then do not depend on machine speed; live use sets
                                     // false so localisation never waits (the map catches up in the background)
 
   bool IsValid(std::string* why) const;
+  // Plane matching (`unimap run --plane-matching`): every scan point is tied
+  // to the plane fitted to the map's surface cells around it
+  // (neighbourhood_planes, gpf.point_to_plane) and points without one are
+  // not measured (gpf.planes_only). A rotating line scanner's map is made of
+  // stripes; measured against the nearest stripe instead of across the
+  // surface, a point beside it pulls the pose along the surface
+  // (docs/mapping.md, known limitation).
+  void UsePlaneMatching();
   // Shared defaults with the platform's N, sigmas, resolution and max range.
   static LocalizerOptions FromPlatform(const CoreParameters& core);
   // FromPlatform tuned for tracking in a fixed, complete prior map (unimap

@@ -20,6 +20,10 @@ void AddRunCommand(CLI::App* app) {
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->add_flag("--no-loop-closure", options->no_loop_closure, "Do not search for loop closures");
+  cmd->add_flag("--plane-matching", options->plane_matching,
+                "Odometry measures each scan point only across the map surface around it (a plane fitted to "
+                "the surface voxels near it; points without one are not measured): for rotating 2D LiDARs, "
+                "whose maps are stripes (docs/mapping.md)");
   cmd->add_option("--motion", options->motion,
                   "Prediction between scans: imu (default), odometry (the dataset's odometry.csv) or "
                   "constant-velocity, for data without an IMU")

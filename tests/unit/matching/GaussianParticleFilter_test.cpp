@@ -100,9 +100,10 @@ TEST(GaussianParticleFilter, PlanarModeLeavesOtherDimensionsAlone) {
 }
 
 // Posterior x of a scan taken at the true pose (identity, also the
-// prediction) in a map that has seen only part of the floor.
-double PosteriorXOnAPartlySeenFloor(bool point_to_plane, int refine_iterations) {
-  const testing::PartlySeenFloorField field;
+// prediction) in a map that has seen only part of the floor
+// (PartlySeenFloorField, or a query with the same distances).
+double PosteriorXOnAPartlySeenFloor(const DistanceQuery& field, bool point_to_plane, bool planes_only,
+                                    int refine_iterations) {
   Matrix6d prior = Matrix6d::Zero();
   prior.diagonal() << 0.05, 0.05, 0.05, 0.01, 0.01, 0.01;
   prior = prior.array().square().matrix();
@@ -111,11 +112,16 @@ double PosteriorXOnAPartlySeenFloor(bool point_to_plane, int refine_iterations) 
   options.effective_points = 50.0;
   options.refine_iterations = refine_iterations;
   options.point_to_plane = point_to_plane;
+  options.planes_only = planes_only;
   GaussianParticleFilter gpf(options);
   const GpfResult r = gpf.Match(Eigen::Isometry3d::Identity(), prior, testing::PartlySeenFloorField::SampleScan(900, 3),
                                 field);
   EXPECT_TRUE(r.ok) << r.reason;
   return r.posterior_mean.x();
+}
+
+double PosteriorXOnAPartlySeenFloor(bool point_to_plane, int refine_iterations) {
+  return PosteriorXOnAPartlySeenFloor(testing::PartlySeenFloorField(), point_to_plane, false, refine_iterations);
 }
 
 TEST(GaussianParticleFilter, PointToPlaneKeepsPointsOnAPartlySeenSurfaceFromPullingTowardsItsEdge) {
@@ -129,6 +135,44 @@ TEST(GaussianParticleFilter, PointToPlaneKeepsPointsOnAPartlySeenSurfaceFromPull
     EXPECT_LT(field_x, -0.01) << refine;
     EXPECT_LT(std::abs(plane_x), 0.003) << refine;
   }
+}
+
+// The partly seen floor of PosteriorXOnAPartlySeenFloor whose points beyond
+// the seen edge (x > 1) have no plane (as a neighbourhood fit would find).
+class NoPlaneBeyondTheEdge final : public DistanceQuery {
+ public:
+  void Distances(const Eigen::Vector3f* p, int n, float* out) const override { floor_.Distances(p, n, out); }
+  void Planes(const Eigen::Vector3f* p, int n, bool* out, Eigen::Vector3f* normals, float* offsets_m) const override {
+    floor_.Planes(p, n, out, normals, offsets_m);
+    for (int i = 0; i < n; ++i) out[i] = out[i] && p[i].x() <= 1.0f;
+  }
+
+ private:
+  testing::PartlySeenFloorField floor_;
+};
+
+TEST(GaussianParticleFilter, PlanesOnlyLeavesPointsWithoutAPlaneUnmeasured) {
+  // Measured in the field, the floor points beyond the seen edge pull the
+  // estimate back; not measured at all, they cannot.
+  const NoPlaneBeyondTheEdge field;
+  EXPECT_LT(PosteriorXOnAPartlySeenFloor(field, true, false, 5), -0.01);
+  EXPECT_LT(std::abs(PosteriorXOnAPartlySeenFloor(field, true, true, 5)), 0.003);
+}
+
+TEST(GaussianParticleFilter, PlanesOnlyWithoutAnyPlaneIsAResult) {
+  const testing::BoxRoomField room(5.0f, 3.0f, 2.0f);  // no planes
+  GpfOptions options;
+  options.point_to_plane = true;
+  options.planes_only = true;
+  GaussianParticleFilter gpf(options);
+  const GpfResult r = gpf.Match(Eigen::Isometry3d::Identity(), Matrix6d::Identity() * 0.01,
+                                {{1.0f, 0.0f, -2.0f}, {0.0f, 1.0f, -2.0f}}, room);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.reason, "no point has a plane");
+  std::string why;
+  options.point_to_plane = false;
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_NE(why.find("planes_only"), std::string::npos);
 }
 
 TEST(GaussianParticleFilter, EmptyScanIsAResultNotACrash) {

@@ -66,5 +66,26 @@ TEST(LocalizerOptionsTest, ForPriorMapTunesForAFixedMap) {
   EXPECT_DOUBLE_EQ(prior.eskf.gyro_bias_walk_rad_s_sqrt_s, 2.0 * odometry.eskf.gyro_bias_walk_rad_s_sqrt_s);
 }
 
+TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
+  LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
+  EXPECT_FALSE(o.neighbourhood_planes);  // off unless asked for (unimap run --plane-matching)
+  EXPECT_FALSE(o.gpf.point_to_plane);
+  o.UsePlaneMatching();
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why)) << why;
+  EXPECT_TRUE(o.neighbourhood_planes);
+  EXPECT_TRUE(o.gpf.point_to_plane);
+  EXPECT_TRUE(o.gpf.planes_only);
+  // Neighbourhood planes without point to plane would never be used.
+  o.gpf.point_to_plane = false;
+  o.gpf.planes_only = false;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("neighbourhood_planes"), std::string::npos);
+  o.UsePlaneMatching();
+  o.neighbourhood_plane.radius_cells = 0;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("neighbourhood_plane: radius_cells"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace unimap::pipeline
