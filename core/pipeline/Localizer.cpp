@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -247,10 +246,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const matching::GpfResult match =
         gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
-                   FieldDistanceQuery(field, options_.trilinear_distance,
-                                      options_.neighbourhood_planes
-                                          ? std::optional<map::NeighbourhoodPlaneOptions>(options_.neighbourhood_plane)
-                                          : std::nullopt));
+                   FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes));
     if (match.ok) {
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       if (update.applied) {

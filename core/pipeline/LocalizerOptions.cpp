@@ -22,7 +22,7 @@ bool LocalizerOptions::IsValid(std::string* why) const {
   }
   if (!motion.IsValid(why)) return false;
   if (neighbourhood_planes) {
-    if (!neighbourhood_plane.IsValid(&inner)) {
+    if (!neighbourhood_planes->IsValid(&inner)) {
       *why = "neighbourhood_plane: " + inner;
       return false;
     }
@@ -63,7 +63,7 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
 }
 
 void LocalizerOptions::UsePlaneMatching() {
-  neighbourhood_planes = true;
+  neighbourhood_planes = map::NeighbourhoodPlaneOptions{};
   gpf.point_to_plane = true;
   gpf.planes_only = true;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 #include "estimation/EskfOptions.hpp"
@@ -28,10 +29,10 @@ struct LocalizerOptions {
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)
-  bool neighbourhood_planes = false;  // point to plane with planes fitted to the map's surface cells
-                                      // around each point (FitNeighbourhoodPlane) instead of the
-                                      // field's cell planes; needs gpf.point_to_plane
-  map::NeighbourhoodPlaneOptions neighbourhood_plane;  // the fit, with neighbourhood_planes
+  std::optional<map::NeighbourhoodPlaneOptions> neighbourhood_planes;  // set: point to plane with planes
+                                      // fitted to the map's surface cells around each point
+                                      // (FitNeighbourhoodPlane, these settings) instead of the field's
+                                      // cell planes; needs gpf.point_to_plane
   bool wait_for_map = true;         // wait for each map insertion to be published before matching on:
                                     // offline runs then do not depend on machine speed; live use sets
                                     // false so localisation never waits (the map catches up in the background)

@@ -68,12 +68,12 @@ TEST(LocalizerOptionsTest, ForPriorMapTunesForAFixedMap) {
 
 TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
   LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
-  EXPECT_FALSE(o.neighbourhood_planes);  // off unless asked for (unimap run --plane-matching)
+  EXPECT_FALSE(o.neighbourhood_planes.has_value());  // off unless asked for (unimap run --plane-matching)
   EXPECT_FALSE(o.gpf.point_to_plane);
   o.UsePlaneMatching();
   std::string why;
   EXPECT_TRUE(o.IsValid(&why)) << why;
-  EXPECT_TRUE(o.neighbourhood_planes);
+  EXPECT_TRUE(o.neighbourhood_planes.has_value());
   EXPECT_TRUE(o.gpf.point_to_plane);
   EXPECT_TRUE(o.gpf.planes_only);
   // Neighbourhood planes without point to plane would never be used.
@@ -82,7 +82,7 @@ TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
   EXPECT_FALSE(o.IsValid(&why));
   EXPECT_NE(why.find("neighbourhood_planes"), std::string::npos);
   o.UsePlaneMatching();
-  o.neighbourhood_plane.radius_cells = 0;
+  o.neighbourhood_planes->radius_cells = 0;
   EXPECT_FALSE(o.IsValid(&why));
   EXPECT_NE(why.find("neighbourhood_plane: radius_cells"), std::string::npos);
 }
