@@ -59,6 +59,7 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
       accumulator_(options_.scans_per_3d_scan) {
   if (!plugin_) throw std::invalid_argument("Localizer: no payload plugin");
   if (!map_) throw std::invalid_argument("Localizer: no map");
+  if (options_.line_gap_fill) line_fill_.emplace(*options_.line_gap_fill);
 }
 
 Localizer::~Localizer() = default;
@@ -280,6 +281,11 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   points_map.reserve(points_body.size());
   const Eigen::Isometry3f T = T_map_body.cast<float>();
   for (const auto& p : points_body) points_map.push_back(T * p);
+  if (const auto* line = std::get_if<LineScan>(&scan); line && line_fill_) {
+    const std::vector<Eigen::Vector3f> filled =
+        line_fill_->Add(t_end, sensor_map, map::LineReturns(*line, body, points_map));
+    fill_points_.insert(fill_points_.end(), filled.begin(), filled.end());
+  }
   if (accumulator_.Add(points_map, sensor_map)) {
     Eigen::Vector3f origin;
     // One point per map voxel: the octree update costs per point, occupancy
@@ -289,6 +295,11 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     try {
       KeyScan key;
       if (on_key_scan_) key = {t_end, T_map_body, scan3d, origin};
+      if (!fill_points_.empty()) {  // the distance map only: key scans keep the measured points
+        scan3d.insert(scan3d.end(), fill_points_.begin(), fill_points_.end());
+        scan3d = matching::VoxelDownsample(scan3d, options_.map.resolution_m, 0, 0);
+      }
+      fill_points_.clear();
       map_->InsertScan(std::move(scan3d), origin);
       ++stats_.map_insertions;
       if (options_.wait_for_map) map_->WaitForUpdates();

@@ -13,6 +13,7 @@
 #include "estimation/StaticInitializer.hpp"
 #include "io/ScanRecord.hpp"
 #include "map/DistanceMap.hpp"
+#include "map/LineGapFill.hpp"
 #include "map/ScanMap.hpp"
 #include "pipeline/EventSink.hpp"
 #include "matching/GaussianParticleFilter.hpp"
@@ -113,6 +114,8 @@ class Localizer : public EventSink {
   EncoderTrack encoder_;
   PoseHistory history_;
   ScanAccumulator accumulator_;
+  std::optional<map::LineGapFill> line_fill_;  // set when options.line_gap_fill is
+  std::vector<Eigen::Vector3f> fill_points_;   // line_fill_'s points for the 3D scan being collected
   std::vector<ImuSample> init_imu_;
   std::deque<io::ScanRecord> pending_;
   double last_imu_time_s_ = -1e300;

@@ -31,6 +31,10 @@ bool LocalizerOptions::IsValid(std::string* why) const {
       return false;
     }
   }
+  if (line_gap_fill && !line_gap_fill->IsValid(&inner)) {
+    *why = "line_gap_fill: " + inner;
+    return false;
+  }
   if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
       !(max_scan_latency_s > 0.0) || !(max_initial_accel_bias_m_s2 > 0.0)) {
     *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
@@ -66,6 +70,11 @@ void LocalizerOptions::UsePlaneMatching() {
   neighbourhood_planes = map::NeighbourhoodPlaneOptions{};
   gpf.point_to_plane = true;
   gpf.planes_only = true;
+  // Planes are fitted across the measured stripes; with the gaps filled
+  // (in a trial build that also put the filled points into the key scans)
+  // hallway seed 6 went from ATE 0.049 to 0.157 m and the tunnel from 0.89
+  // to 2.08 m.
+  line_gap_fill.reset();
 }
 
 LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {

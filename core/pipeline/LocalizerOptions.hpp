@@ -6,6 +6,7 @@
 #include "estimation/MotionPriorOptions.hpp"
 #include "estimation/StaticInitializer.hpp"
 #include "map/DistanceMapOptions.hpp"
+#include "map/LineGapFill.hpp"
 #include "map/NeighbourhoodPlane.hpp"
 #include "matching/GpfOptions.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -33,6 +34,9 @@ struct LocalizerOptions {
                                       // fitted to the map's surface cells around each point
                                       // (FitNeighbourhoodPlane, these settings) instead of the field's
                                       // cell planes; needs gpf.point_to_plane
+  std::optional<map::LineGapFillOptions> line_gap_fill = map::LineGapFillOptions{};  // set: line scans
+                                      // also insert the surface between consecutive lines into the
+                                      // distance map (LineGapFill; not into key scans or the map files)
   bool wait_for_map = true;         // wait for each map insertion to be published before matching on:
                                     // offline runs then do not depend on machine speed; live use sets
                                     // false so localisation never waits (the map catches up in the background)
@@ -41,7 +45,7 @@ struct LocalizerOptions {
   // Plane matching (`unimap run --plane-matching`): every scan point is tied
   // to the plane fitted to the map's surface cells around it
   // (neighbourhood_planes, gpf.point_to_plane) and points without one are
-  // not measured (gpf.planes_only). A rotating line scanner's map is made of
+  // not measured (gpf.planes_only); no line gap fill. A rotating line scanner's map is made of
   // stripes; measured against the nearest stripe instead of across the
   // surface, a point beside it pulls the pose along the surface
   // (docs/mapping.md, known limitation).

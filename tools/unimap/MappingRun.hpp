@@ -13,6 +13,7 @@ struct MappingRunOptions {
   int threads = 1;              // GPF threads
   bool quiet = false;           // no progress line
   bool no_loop_closure = false;  // map without loop-closure search
+  bool no_line_gap_fill = false;  // line scans: the distance map holds the measured stripes only
   bool plane_matching = false;   // odometry matches points against neighbourhood planes only
                                  // (LocalizerOptions::UsePlaneMatching)
   std::string motion = "imu";    // prediction source: imu, odometry (odometry.csv) or constant-velocity

@@ -24,6 +24,9 @@ void AddRunCommand(CLI::App* app) {
                 "Odometry measures each scan point only across the map surface around it (a plane fitted to "
                 "the surface voxels near it; points without one are not measured): for rotating 2D LiDARs, "
                 "whose maps are stripes (docs/mapping.md)");
+  cmd->add_flag("--no-line-gap-fill", options->no_line_gap_fill,
+                "Line scans (rotating 2D LiDARs): do not fill the distance map's surface between consecutive "
+                "lines; it then holds only the measured stripes (docs/mapping.md)");
   cmd->add_option("--motion", options->motion,
                   "Prediction between scans: imu (default), odometry (the dataset's odometry.csv) or "
                   "constant-velocity, for data without an IMU")

@@ -76,6 +76,7 @@ TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
   EXPECT_TRUE(o.neighbourhood_planes.has_value());
   EXPECT_TRUE(o.gpf.point_to_plane);
   EXPECT_TRUE(o.gpf.planes_only);
+  EXPECT_FALSE(o.line_gap_fill.has_value());  // planes are fitted across the measured stripes
   // Neighbourhood planes without point to plane would never be used.
   o.gpf.point_to_plane = false;
   o.gpf.planes_only = false;
@@ -85,6 +86,18 @@ TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
   o.neighbourhood_planes->radius_cells = 0;
   EXPECT_FALSE(o.IsValid(&why));
   EXPECT_NE(why.find("neighbourhood_plane: radius_cells"), std::string::npos);
+}
+
+TEST(LocalizerOptionsTest, LineGapFillIsOnByDefaultAndChecked) {
+  LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
+  ASSERT_TRUE(o.line_gap_fill.has_value());
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why)) << why;
+  o.line_gap_fill->max_incidence_deg = 95.0;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("line_gap_fill: max_incidence_deg"), std::string::npos);
+  o.line_gap_fill.reset();  // off (unimap run --no-line-gap-fill)
+  EXPECT_TRUE(o.IsValid(&why)) << why;
 }
 
 }  // namespace

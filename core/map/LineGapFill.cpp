@@ -1,0 +1,90 @@
+#include "map/LineGapFill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace unimap::map {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+std::vector<BeamReturn> LineReturns(const LineScan& line, const BodyScan& body,
+                                    const std::vector<Eigen::Vector3f>& points_map) {
+  std::vector<BeamReturn> out;
+  if (!(line.time_increment_s > 0.0) || body.points.size() != points_map.size()) return out;
+  out.reserve(points_map.size());
+  const double beams = std::min(static_cast<double>(line.ranges_m.size()), 65536.0);  // BeamReturn::beam is 16 bits
+  for (std::size_t i = 0; i < points_map.size(); ++i) {
+    const double beam = std::round((body.points[i].time_s - line.start_time_s) / line.time_increment_s);
+    if (beam >= 0.0 && beam < beams) out.push_back({static_cast<std::uint16_t>(beam), points_map[i]});
+  }
+  return out;
+}
+
+bool LineGapFillOptions::IsValid(std::string* why) const {
+  std::string local_why;
+  if (why == nullptr) why = &local_why;
+  if (!(step_m > 0.0) || !(max_gap_m >= step_m)) {
+    *why = "step_m must be > 0 and max_gap_m >= step_m";
+    return false;
+  }
+  if (!(max_incidence_deg > 0.0 && max_incidence_deg < 90.0)) {
+    *why = "max_incidence_deg must be in (0, 90)";
+    return false;
+  }
+  if (!(max_line_interval_s > 0.0)) {
+    *why = "max_line_interval_s must be > 0";
+    return false;
+  }
+  return true;
+}
+
+LineGapFill::LineGapFill(LineGapFillOptions options) : options_(options) {
+  std::string why;
+  if (!options_.IsValid(&why)) throw std::invalid_argument("LineGapFillOptions: " + why);
+  cos_min_beam_angle_ = std::cos((90.0 - options_.max_incidence_deg) * kPi / 180.0);
+}
+
+std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector3f& sensor_map,
+                                              const std::vector<BeamReturn>& returns) {
+  std::vector<Eigen::Vector3f> filled;
+  const bool consecutive =
+      have_previous_ && time_s > previous_time_s_ && time_s - previous_time_s_ <= options_.max_line_interval_s;
+  const float max_gap = static_cast<float>(options_.max_gap_m);
+  const float step = static_cast<float>(options_.step_m);
+  const float cos_min = static_cast<float>(cos_min_beam_angle_);
+  if (consecutive) {
+    for (const BeamReturn& r : returns) {
+      if (r.beam >= previous_.size() || !previous_[r.beam].allFinite() || !r.p_map.allFinite()) continue;
+      const Eigen::Vector3f& a = previous_[r.beam];
+      const Eigen::Vector3f gap = r.p_map - a;
+      const float length = gap.norm();
+      if (!(length > step) || length > max_gap) continue;  // touching, or a hole
+      // A depth jump runs along the beams: the gap then is no surface.
+      const Eigen::Vector3f beam = ((a - previous_sensor_map_) + (r.p_map - sensor_map)).normalized();
+      if (std::abs(gap.dot(beam)) > cos_min * length) continue;
+      const int inner = static_cast<int>(std::floor(length / step));
+      for (int k = 1; k <= inner; ++k) {
+        const float s = static_cast<float>(k) / static_cast<float>(inner + 1);
+        filled.push_back(a + s * gap);
+      }
+    }
+  }
+  // Keep this line, by beam.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  previous_.assign(previous_.size(), Eigen::Vector3f::Constant(nan));
+  for (const BeamReturn& r : returns) {
+    if (r.beam >= previous_.size()) previous_.resize(r.beam + 1u, Eigen::Vector3f::Constant(nan));
+    previous_[r.beam] = r.p_map;
+  }
+  have_previous_ = true;
+  previous_time_s_ = time_s;
+  previous_sensor_map_ = sensor_map;
+  return filled;
+}
+
+}  // namespace unimap::map
