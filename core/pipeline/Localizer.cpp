@@ -281,25 +281,23 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   points_map.reserve(points_body.size());
   const Eigen::Isometry3f T = T_map_body.cast<float>();
   for (const auto& p : points_body) points_map.push_back(T * p);
+  std::vector<Eigen::Vector3f> filled;  // the distance map only: key scans keep the measured points
   if (const auto* line = std::get_if<LineScan>(&scan); line && line_fill_) {
-    const std::vector<Eigen::Vector3f> filled =
-        line_fill_->Add(t_end, sensor_map, map::LineReturns(*line, body, points_map));
-    fill_points_.insert(fill_points_.end(), filled.begin(), filled.end());
+    filled = line_fill_->Add(t_end, sensor_map, map::LineReturns(*line, body, points_map));
   }
-  if (accumulator_.Add(points_map, sensor_map)) {
+  if (accumulator_.Add(points_map, sensor_map, filled)) {
     Eigen::Vector3f origin;
     // One point per map voxel: the octree update costs per point, occupancy
     // barely changes.
     std::vector<Eigen::Vector3f> scan3d =
-        matching::VoxelDownsample(accumulator_.Take(&origin), options_.map.resolution_m, 0, 0);
+        matching::VoxelDownsample(accumulator_.Take(&origin, &filled), options_.map.resolution_m, 0, 0);
     try {
       KeyScan key;
       if (on_key_scan_) key = {t_end, T_map_body, scan3d, origin};
-      if (!fill_points_.empty()) {  // the distance map only: key scans keep the measured points
-        scan3d.insert(scan3d.end(), fill_points_.begin(), fill_points_.end());
+      if (!filled.empty()) {
+        scan3d.insert(scan3d.end(), filled.begin(), filled.end());
         scan3d = matching::VoxelDownsample(scan3d, options_.map.resolution_m, 0, 0);
       }
-      fill_points_.clear();
       map_->InsertScan(std::move(scan3d), origin);
       ++stats_.map_insertions;
       if (options_.wait_for_map) map_->WaitForUpdates();

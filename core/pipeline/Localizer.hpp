@@ -115,7 +115,6 @@ class Localizer : public EventSink {
   PoseHistory history_;
   ScanAccumulator accumulator_;
   std::optional<map::LineGapFill> line_fill_;  // set when options.line_gap_fill is
-  std::vector<Eigen::Vector3f> fill_points_;   // line_fill_'s points for the 3D scan being collected
   std::vector<ImuSample> init_imu_;
   std::deque<io::ScanRecord> pending_;
   double last_imu_time_s_ = -1e300;

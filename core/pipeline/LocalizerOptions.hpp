@@ -45,10 +45,10 @@ struct LocalizerOptions {
   // Plane matching (`unimap run --plane-matching`): every scan point is tied
   // to the plane fitted to the map's surface cells around it
   // (neighbourhood_planes, gpf.point_to_plane) and points without one are
-  // not measured (gpf.planes_only); no line gap fill. A rotating line scanner's map is made of
-  // stripes; measured against the nearest stripe instead of across the
-  // surface, a point beside it pulls the pose along the surface
-  // (docs/mapping.md, known limitation).
+  // not measured (gpf.planes_only); no line gap fill. A rotating line
+  // scanner's map is made of stripes; measured against the nearest stripe
+  // instead of across the surface, a point beside it pulls the pose along
+  // the surface (docs/mapping.md, known limitation).
   void UsePlaneMatching();
   // Shared defaults with the platform's N, sigmas, resolution and max range.
   static LocalizerOptions FromPlatform(const CoreParameters& core);

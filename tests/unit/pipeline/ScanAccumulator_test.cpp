@@ -17,5 +17,26 @@ TEST(ScanAccumulator, CollectsNScansThenResets) {
   EXPECT_EQ(accumulator.count(), 0);
 }
 
+TEST(ScanAccumulator, KeepsMapOnlyPointsApart) {
+  ScanAccumulator accumulator(2);
+  EXPECT_FALSE(accumulator.Add({Eigen::Vector3f(1, 0, 0)}, Eigen::Vector3f::Zero(), {Eigen::Vector3f(5, 0, 0)}));
+  EXPECT_TRUE(accumulator.Add({Eigen::Vector3f(2, 0, 0)}, Eigen::Vector3f::Zero(), {Eigen::Vector3f(6, 0, 0)}));
+  Eigen::Vector3f origin;
+  std::vector<Eigen::Vector3f> map_only;
+  const auto points = accumulator.Take(&origin, &map_only);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[1], Eigen::Vector3f(2, 0, 0));
+  ASSERT_EQ(map_only.size(), 2u);
+  EXPECT_EQ(map_only[0], Eigen::Vector3f(5, 0, 0));
+  // Taking without asking for them drops them with the rest.
+  accumulator.Add({}, Eigen::Vector3f::Zero(), {Eigen::Vector3f(7, 0, 0)});
+  accumulator.Add({}, Eigen::Vector3f::Zero());
+  accumulator.Take(&origin);
+  accumulator.Add({}, Eigen::Vector3f::Zero());
+  accumulator.Add({}, Eigen::Vector3f::Zero());
+  accumulator.Take(&origin, &map_only);
+  EXPECT_TRUE(map_only.empty());
+}
+
 }  // namespace
 }  // namespace unimap::pipeline
