@@ -22,6 +22,24 @@ std::vector<int> ActiveDims(bool planar) {
   return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
 }
 
+// Removes the points farther than max_distance_m from the map at the
+// predicted pose from *points; returns how many.
+int DropUnseen(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field, double max_distance_m,
+               std::vector<Eigen::Vector3f>* points) {
+  const Eigen::Isometry3f T = T_map_body_predicted.cast<float>();
+  std::vector<Eigen::Vector3f> points_map(points->size());
+  for (std::size_t i = 0; i < points->size(); ++i) points_map[i] = T * (*points)[i];
+  std::vector<float> distances(points->size());
+  field.Distances(points_map.data(), static_cast<int>(points_map.size()), distances.data());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    if (distances[i] <= max_distance_m) (*points)[kept++] = (*points)[i];
+  }
+  const int dropped = static_cast<int>(points->size() - kept);
+  points->resize(kept);
+  return dropped;
+}
+
 // Moves the points whose cell at the predicted pose has a surface plane out
 // of *points into plane points tied to that plane.
 std::vector<PlanePoint> TieToPlanes(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field,
@@ -67,7 +85,7 @@ GaussianParticleFilter::~GaussianParticleFilter() = default;
 GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_predicted,
                                         const Matrix6d& predicted_covariance,
                                         const std::vector<Eigen::Vector3f>& points_body,
-                                        const DistanceQuery& field) {
+                                        const DistanceQuery& field, double max_predicted_distance_m) {
   GpfResult result;
   std::vector<Eigen::Vector3f> points =
       VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
@@ -80,8 +98,14 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     unmeasured = static_cast<int>(points.size());
     points.clear();
   }
+  if (max_predicted_distance_m > 0.0 && !points.empty()) {
+    result.points_unseen = DropUnseen(T_map_body_predicted, field, max_predicted_distance_m, &points);
+    unmeasured += result.points_unseen;
+  }
   if (points.empty() && plane_points.empty()) {
-    result.reason = unmeasured > 0 ? "no point has a plane" : "no points to match";
+    result.reason = result.points_unseen > 0 ? "no point near the map"
+                    : unmeasured > 0         ? "no point has a plane"
+                                             : "no points to match";
     return result;
   }
   const std::vector<int> dims = ActiveDims(options_.planar);

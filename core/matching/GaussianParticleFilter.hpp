@@ -23,6 +23,7 @@ struct GpfResult {
   PseudoMeasurement measurement;          // (z, R) for Eskf::UpdatePoseError
   double effective_sample_size = 0.0;     // 1 / sum w^2
   int points_used = 0;                    // after downsampling
+  int points_unseen = 0;                  // of those: beyond max_predicted_distance_m, not measured
   int refine_iterations = 0;              // accepted Gauss-Newton steps (GpfOptions::refine_iterations)
   bool refined = false;                   // posterior_* are the refined Laplace posterior
 };
@@ -39,8 +40,14 @@ class GaussianParticleFilter {
   explicit GaussianParticleFilter(GpfOptions options);
   ~GaussianParticleFilter();
 
+  // max_predicted_distance_m > 0: the (field) points farther than this
+  // from the map at the predicted pose are not measured, only counted in
+  // the scan's n (ScanLikelihood): they look at surfaces the map has not
+  // seen yet, and measured against the nearest one it has they pull the
+  // pose towards it.
   GpfResult Match(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
-                  const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field);
+                  const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                  double max_predicted_distance_m = 0.0);
 
   const GpfOptions& options() const { return options_; }
 

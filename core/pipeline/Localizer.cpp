@@ -245,9 +245,11 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   bool matched = false;
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
+    const bool is_line = std::holds_alternative<LineScan>(scan);
     const matching::GpfResult match =
         gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
-                   FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes));
+                   FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes),
+                   is_line ? options_.line_max_predicted_distance_m : 0.0);
     if (match.ok) {
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       if (update.applied) {

@@ -103,7 +103,8 @@ TEST(GaussianParticleFilter, PlanarModeLeavesOtherDimensionsAlone) {
 // prediction) in a map that has seen only part of the floor
 // (PartlySeenFloorField, or a query with the same distances).
 double PosteriorXOnAPartlySeenFloor(const DistanceQuery& field, bool point_to_plane, bool planes_only,
-                                    int refine_iterations) {
+                                    int refine_iterations, double max_predicted_distance_m = 0.0,
+                                    int* points_unseen = nullptr) {
   Matrix6d prior = Matrix6d::Zero();
   prior.diagonal() << 0.05, 0.05, 0.05, 0.01, 0.01, 0.01;
   prior = prior.array().square().matrix();
@@ -115,8 +116,9 @@ double PosteriorXOnAPartlySeenFloor(const DistanceQuery& field, bool point_to_pl
   options.planes_only = planes_only;
   GaussianParticleFilter gpf(options);
   const GpfResult r = gpf.Match(Eigen::Isometry3d::Identity(), prior, testing::PartlySeenFloorField::SampleScan(900, 3),
-                                field);
+                                field, max_predicted_distance_m);
   EXPECT_TRUE(r.ok) << r.reason;
+  if (points_unseen != nullptr) *points_unseen = r.points_unseen;
   return r.posterior_mean.x();
 }
 
@@ -134,6 +136,25 @@ TEST(GaussianParticleFilter, PointToPlaneKeepsPointsOnAPartlySeenSurfaceFromPull
     const double plane_x = PosteriorXOnAPartlySeenFloor(true, refine);
     EXPECT_LT(field_x, -0.01) << refine;
     EXPECT_LT(std::abs(plane_x), 0.003) << refine;
+  }
+}
+
+TEST(GaussianParticleFilter, PointsFarFromTheMapAtThePredictionAreNotMeasured) {
+  // The floor beyond the seen edge (x > 1) lies up to 2 m from what the map
+  // holds; with max_predicted_distance_m those points are left out and the
+  // estimate stays at the truth.
+  const testing::PartlySeenFloorField field;
+  for (const int refine : {0, 5}) {
+    int unseen = -1;
+    const double all_x = PosteriorXOnAPartlySeenFloor(field, false, false, refine, 0.0, &unseen);
+    EXPECT_EQ(unseen, 0);
+    const double gated_x = PosteriorXOnAPartlySeenFloor(field, false, false, refine, 0.15, &unseen);
+    EXPECT_LT(all_x, -0.01) << refine;
+    EXPECT_LT(std::abs(gated_x), 0.003) << refine;
+    // About a third of the floor points (a ninth of the scan, before
+    // downsampling to 300 points) lie beyond x = 1.15.
+    EXPECT_GT(unseen, 15) << refine;
+    EXPECT_LT(unseen, 60) << refine;
   }
 }
 

@@ -100,5 +100,18 @@ TEST(LocalizerOptionsTest, LineGapFillIsOnByDefaultAndChecked) {
   EXPECT_TRUE(o.IsValid(&why)) << why;
 }
 
+TEST(LocalizerOptionsTest, GatingLinePointsIsOffByDefault) {
+  LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
+  EXPECT_EQ(o.line_max_predicted_distance_m, 0.0);
+  EXPECT_EQ(LocalizerOptions::ForPriorMap(WithResolution(0.1)).line_max_predicted_distance_m, 0.0);
+  o.GateLinePoints();  // unimap run --gate-line-points
+  EXPECT_NEAR(o.line_max_predicted_distance_m, 0.15, 1e-12);  // 1.5 voxels
+  std::string why;
+  EXPECT_TRUE(o.IsValid(&why)) << why;
+  o.line_max_predicted_distance_m = -0.1;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("line_max_predicted_distance_m"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace unimap::pipeline
