@@ -158,6 +158,17 @@ TEST(GaussianParticleFilter, PointsFarFromTheMapAtThePredictionAreNotMeasured) {
   }
 }
 
+TEST(GaussianParticleFilter, NoPointNearTheMapIsAResult) {
+  const testing::PartlySeenFloorField field;
+  GaussianParticleFilter gpf(GpfOptions{});
+  // 1 m above the floor, 1.5 m and more from the walls.
+  const GpfResult r = gpf.Match(Eigen::Isometry3d::Identity(), Matrix6d::Identity() * 0.01,
+                                {{0.0f, 0.0f, 1.0f}, {0.5f, 0.0f, 1.0f}}, field, 0.15);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.points_unseen, 2);
+  EXPECT_EQ(r.reason, "no point near the map");
+}
+
 // The partly seen floor of PosteriorXOnAPartlySeenFloor whose points beyond
 // the seen edge (x > 1) have no plane (as a neighbourhood fit would find).
 class NoPlaneBeyondTheEdge final : public DistanceQuery {
