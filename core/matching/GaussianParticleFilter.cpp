@@ -22,13 +22,19 @@ std::vector<int> ActiveDims(bool planar) {
   return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
 }
 
+// The body points in the map frame at T_map_body.
+std::vector<Eigen::Vector3f> ToMap(const Eigen::Isometry3d& T_map_body, const std::vector<Eigen::Vector3f>& points) {
+  const Eigen::Isometry3f T = T_map_body.cast<float>();
+  std::vector<Eigen::Vector3f> points_map(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) points_map[i] = T * points[i];
+  return points_map;
+}
+
 // Removes the points farther than max_distance_m from the map at the
 // predicted pose from *points; returns how many.
 int DropUnseen(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field, double max_distance_m,
                std::vector<Eigen::Vector3f>* points) {
-  const Eigen::Isometry3f T = T_map_body_predicted.cast<float>();
-  std::vector<Eigen::Vector3f> points_map(points->size());
-  for (std::size_t i = 0; i < points->size(); ++i) points_map[i] = T * (*points)[i];
+  const std::vector<Eigen::Vector3f> points_map = ToMap(T_map_body_predicted, *points);
   std::vector<float> distances(points->size());
   field.Distances(points_map.data(), static_cast<int>(points_map.size()), distances.data());
   std::size_t kept = 0;
@@ -45,9 +51,7 @@ int DropUnseen(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuer
 std::vector<PlanePoint> TieToPlanes(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field,
                                     std::vector<Eigen::Vector3f>* points) {
   const int n = static_cast<int>(points->size());
-  const Eigen::Isometry3f T = T_map_body_predicted.cast<float>();
-  std::vector<Eigen::Vector3f> points_map(points->size());
-  for (int i = 0; i < n; ++i) points_map[i] = T * (*points)[i];
+  const std::vector<Eigen::Vector3f> points_map = ToMap(T_map_body_predicted, *points);
   std::unique_ptr<bool[]> has_plane(new bool[points->size()]);
   std::vector<Eigen::Vector3f> normals(points->size());
   std::vector<float> offsets(points->size());

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "PipelineTestData.hpp"
-#include "Scenario.hpp"
-#include "Simulator.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/DatasetWriter.hpp"
 #include "io/TumTrajectory.hpp"
@@ -24,16 +22,7 @@ namespace fs = std::filesystem;
 // 20 s of the tunnel with the rotating Hokuyo (5 s static, then a climb from
 // 1.5 m to 5 m while moving along the tunnel), made once.
 const fs::path& Climb() {
-  static const fs::path dir = [] {
-    const fs::path out = test::Scratch("climb");
-    fs::remove_all(out);
-    sim::SimulationOptions options;
-    options.out_dir = out;
-    options.duration_s = 20.0;
-    options.payload = test::kPlatform.string();
-    sim::Simulator(sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml"), options).Run();
-    return out;
-  }();
+  static const fs::path dir = test::Simulate("climb", "tunnel", 20.0);
   return dir;
 }
 
@@ -121,17 +110,7 @@ TEST(LocalizerTest, WheelOdometryGapsHoldThePoseAndAreCounted) {
 // still; its first 3D scan (N = 40 lines, motor at 30 rpm) is half a motor
 // turn: its 270 deg lines leave half of the horizon unseen. Made once.
 const fs::path& HallwayStart() {
-  static const fs::path dir = [] {
-    const fs::path out = test::Scratch("hallway_start");
-    fs::remove_all(out);
-    sim::SimulationOptions options;
-    options.out_dir = out;
-    options.duration_s = 3.0;
-    options.payload = test::kPlatform.string();
-    sim::Simulator(sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/narrow_hallway.yaml"), options)
-        .Run();
-    return out;
-  }();
+  static const fs::path dir = test::Simulate("hallway_start", "narrow_hallway", 3.0);
   return dir;
 }
 
@@ -179,9 +158,9 @@ TEST(LocalizerTest, LinesLookingWhereTheMapHasNotLookedDoNotPullAStandingSensor)
 }
 
 TEST(LocalizerTest, MatchingAgainstHalfAHorizonPullsAStandingSensor) {
-  // Every point measured (the default): the lines of the second half turn are pulled
-  // towards the half of the horizon the map holds, and the estimate moves
-  // while the sensor stands still.
+  // Every point measured (the default): the lines of the second half turn
+  // are pulled towards the half of the horizon the map holds, and the
+  // estimate moves while the sensor stands still.
   const StartMotion m = TrackHallwayStart(false);
   EXPECT_GT(m.max_translation_m, 0.3);
   EXPECT_GT(m.max_rotation_deg, 3.0);

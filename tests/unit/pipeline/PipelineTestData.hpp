@@ -30,18 +30,25 @@ inline std::filesystem::path Scratch(const std::string& name) {
 
 inline const std::filesystem::path kPlatform = std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/platforms/rotating_hokuyo.yaml";
 
+// The first duration_s of configs/scenarios/<scenario>.yaml with the
+// rotating Hokuyo, simulated into Scratch(name).
+inline std::filesystem::path Simulate(const std::string& name, const std::string& scenario, double duration_s) {
+  const std::filesystem::path out = Scratch(name);
+  std::filesystem::remove_all(out);
+  sim::SimulationOptions options;
+  options.out_dir = out;
+  options.duration_s = duration_s;
+  options.payload = kPlatform.string();
+  sim::Simulator(
+      sim::LoadScenario(std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/scenarios" / (scenario + ".yaml")),
+      options)
+      .Run();
+  return out;
+}
+
 // 6 s of the tunnel scenario with the rotating Hokuyo, made once.
 inline const std::filesystem::path& CleanDataset() {
-  static const std::filesystem::path dir = [] {
-    const std::filesystem::path out = Scratch("clean");
-    std::filesystem::remove_all(out);
-    sim::SimulationOptions options;
-    options.out_dir = out;
-    options.duration_s = 6.0;
-    options.payload = kPlatform.string();
-    sim::Simulator(sim::LoadScenario(std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml"), options).Run();
-    return out;
-  }();
+  static const std::filesystem::path dir = Simulate("clean", "tunnel", 6.0);
   return dir;
 }
 
