@@ -32,10 +32,13 @@ struct DistanceMapOptions {
   bool compute_distances = true;  // false: only the octree is kept up to date (no distance transform,
                                   // empty fields) until DistanceMap::EnableDistances() (a growing submap)
   bool subvoxel_surfaces = true;  // distances are to the surface inside each occupied voxel
-                                  // (mean and plane of its returns, see SurfacePoints), signed
-                                  // behind it, instead of to the voxel centre (up to half a
+                                  // (mean and plane of its returns, see SurfacePoints; signed
+                                  // behind it with signed_surfaces), instead of to the voxel centre (up to half a
                                   // voxel off); ~80 bytes per occupied voxel. Voxels without
                                   // returns (.bt priors) keep the centre
+  bool signed_surfaces = true;  // with subvoxel_surfaces: distances are negative directly behind
+                                // an oriented surface disk (interpolation crosses zero on it);
+                                // false: magnitudes only (see SurfacePoints)
   bool cell_planes = false;  // with subvoxel_surfaces: fields also carry the plane of each
                              // cell's nearest surface element (CellPlanes, 4 bytes per cell),
                              // for GpfOptions::point_to_plane

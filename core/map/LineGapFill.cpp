@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace unimap::map {
 namespace {
@@ -36,6 +37,14 @@ bool LineGapFillOptions::IsValid(std::string* why) const {
     *why = "max_incidence_deg must be in (0, 90)";
     return false;
   }
+  if (!(max_grazing_incidence_deg >= max_incidence_deg && max_grazing_incidence_deg < 90.0)) {
+    *why = "max_grazing_incidence_deg must be in [max_incidence_deg, 90)";
+    return false;
+  }
+  if (!(max_turn_deg >= 0.0 && max_turn_deg < 90.0)) {
+    *why = "max_turn_deg must be in [0, 90)";
+    return false;
+  }
   if (!(max_line_interval_s > 0.0)) {
     *why = "max_line_interval_s must be > 0";
     return false;
@@ -47,6 +56,8 @@ LineGapFill::LineGapFill(LineGapFillOptions options) : options_(options) {
   std::string why;
   if (!options_.IsValid(&why)) throw std::invalid_argument("LineGapFillOptions: " + why);
   cos_min_beam_angle_ = std::cos((90.0 - options_.max_incidence_deg) * kPi / 180.0);
+  cos_min_grazing_beam_angle_ = std::cos((90.0 - options_.max_grazing_incidence_deg) * kPi / 180.0);
+  cos_max_turn_ = std::cos(options_.max_turn_deg * kPi / 180.0);
 }
 
 std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector3f& sensor_map,
@@ -57,6 +68,10 @@ std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector
   const float max_gap = static_cast<float>(options_.max_gap_m);
   const float step = static_cast<float>(options_.step_m);
   const float cos_min = static_cast<float>(cos_min_beam_angle_);
+  const float cos_min_grazing = static_cast<float>(cos_min_grazing_beam_angle_);
+  const float cos_max_turn = static_cast<float>(cos_max_turn_);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Eigen::Vector3f> gaps(previous_gap_.size(), Eigen::Vector3f::Constant(nan));
   if (consecutive) {
     for (const BeamReturn& r : returns) {
       if (r.beam >= previous_.size() || !previous_[r.beam].allFinite() || !r.p_map.allFinite()) continue;
@@ -64,9 +79,17 @@ std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector
       const Eigen::Vector3f gap = r.p_map - a;
       const float length = gap.norm();
       if (!(length > step) || length > max_gap) continue;  // touching, or a hole
-      // A depth jump runs along the beams: the gap then is no surface.
+      if (r.beam >= gaps.size()) gaps.resize(r.beam + 1u, Eigen::Vector3f::Constant(nan));
+      gaps[r.beam] = gap / length;
+      // A depth jump runs along the beams: the gap then is no surface, unless
+      // it continues the previous gap (a surface at a grazing angle).
       const Eigen::Vector3f beam = ((a - previous_sensor_map_) + (r.p_map - sensor_map)).normalized();
-      if (std::abs(gap.dot(beam)) > cos_min * length) continue;
+      const float along = std::abs(gap.dot(beam));
+      if (along > cos_min * length) {
+        const bool continues = r.beam < previous_gap_.size() && previous_gap_[r.beam].allFinite() &&
+                               previous_gap_[r.beam].dot(gap) >= cos_max_turn * length;
+        if (!continues || along > cos_min_grazing * length) continue;
+      }
       const int inner = static_cast<int>(std::floor(length / step));
       for (int k = 1; k <= inner; ++k) {
         const float s = static_cast<float>(k) / static_cast<float>(inner + 1);
@@ -74,8 +97,8 @@ std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector
       }
     }
   }
-  // Keep this line, by beam.
-  const float nan = std::numeric_limits<float>::quiet_NaN();
+  // Keep this line and its gaps, by beam.
+  previous_gap_ = std::move(gaps);
   previous_.assign(previous_.size(), Eigen::Vector3f::Constant(nan));
   for (const BeamReturn& r : returns) {
     if (r.beam >= previous_.size()) previous_.resize(r.beam + 1u, Eigen::Vector3f::Constant(nan));

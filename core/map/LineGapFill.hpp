@@ -14,7 +14,10 @@ namespace unimap::map {
 struct LineGapFillOptions {
   double step_m = 0.05;                 // spacing of the filled points along a gap
   double max_gap_m = 1.0;               // longer gaps between a beam's two returns stay open
-  double max_incidence_deg = 75.0;      // a gap more nearly along the beams than this is a depth jump
+  double max_incidence_deg = 75.0;      // a gap more nearly along the beams than this is a depth jump ...
+  double max_grazing_incidence_deg = 85.0;  // ... unless it is at most this and continues the beam's
+                                        // previous gap (a wall seen at a grazing angle)
+  double max_turn_deg = 45.0;           // continues: the two gaps' directions differ by at most this
   double max_line_interval_s = 0.1;     // lines further apart in time are not consecutive
 
   bool IsValid(std::string* why) const;
@@ -39,7 +42,9 @@ std::vector<BeamReturn> LineReturns(const LineScan& line, const BodyScan& body,
 // surface towards the stripes already seen (docs/mapping.md, stripe bias).
 // Filling the gap between the two returns of the same beam in consecutive
 // lines, where they plausibly lie on one surface, makes the map's surfaces
-// continuous.
+// continuous. A gap running nearly along the beams is a depth jump, except
+// where the same beam's gap in the previous pair of lines ran the same way:
+// a surface seen at a grazing angle (a corridor's walls far ahead).
 class LineGapFill {
  public:
   explicit LineGapFill(LineGapFillOptions options);
@@ -53,10 +58,13 @@ class LineGapFill {
  private:
   LineGapFillOptions options_;
   double cos_min_beam_angle_;  // cos(90 deg - max incidence)
+  double cos_min_grazing_beam_angle_;  // cos(90 deg - max grazing incidence)
+  double cos_max_turn_;        // cos(max turn)
   bool have_previous_ = false;
   double previous_time_s_ = 0.0;
   Eigen::Vector3f previous_sensor_map_ = Eigen::Vector3f::Zero();
   std::vector<Eigen::Vector3f> previous_;  // by beam; NaN where the beam had no return
+  std::vector<Eigen::Vector3f> previous_gap_;  // by beam: its last gap (unit), NaN when none
 };
 
 }  // namespace unimap::map

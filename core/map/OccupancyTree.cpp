@@ -56,7 +56,7 @@ OccupancyTree::OccupancyTree(const DistanceMapOptions& options)
       tree_(std::make_unique<octomap::OcTree>(options.resolution_m)),
       resolution_m_(options.resolution_m),
       tracks_occupied_(options.raycast_free_space && options.clear_occupied_only) {
-  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_);
+  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_, options_.signed_surfaces);
   ApplySensorModel();
 }
 
@@ -68,7 +68,7 @@ OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree,
       tracks_occupied_(options.raycast_free_space && options.clear_occupied_only) {
   if (tree_ == nullptr) throw InputError("OccupancyTree: null octree");
   resolution_m_ = tree_->getResolution();
-  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_);
+  if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_, options_.signed_surfaces);
   ApplySensorModel();
   if (!tracks_occupied_) return;
   ForEachOccupiedLeaf(*tree_, nullptr, [this](const Eigen::Vector3i& min_key, int size) {

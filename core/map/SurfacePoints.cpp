@@ -57,8 +57,9 @@ void FitPlane(const Eigen::Matrix3f& scatter, const Eigen::Vector3f& mean_view, 
 
 }  // namespace
 
-SurfacePoints::SurfacePoints(double resolution_m)
+SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances)
     : resolution_m_(static_cast<float>(resolution_m)),
+      signed_(signed_distances),
       patch_radius_m_(kPatchRadius * resolution_m_),
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 

@@ -22,9 +22,9 @@ namespace unimap::map {
 // view direction); or only the mean point when the pooled returns span no
 // plane (corners, rough or two-sided surfaces).
 // SignedDistance measures to that element, negative directly behind an
-// oriented disk, so interpolating the distances of cells on both sides of a
-// surface crosses zero on it. Voxels are named by packed octree keys (Pack).
-// Not thread-safe.
+// oriented disk (when signed), so interpolating the distances of cells on
+// both sides of a surface crosses zero on it. Voxels are named by packed
+// octree keys (Pack). Not thread-safe.
 class SurfacePoints {
  public:
   // Surface of one voxel (map frame).
@@ -44,7 +44,8 @@ class SurfacePoints {
   // Fraction of a voxel's weight in new returns that triggers a new plane fit.
   static constexpr float kRefitFraction = 0.5f;
 
-  explicit SurfacePoints(double resolution_m);
+  // signed_distances false: SignedDistance returns magnitudes only.
+  explicit SurfacePoints(double resolution_m, bool signed_distances = true);
 
   // The packed form of a 16-bit octree key (x, y, z).
   static std::uint64_t Pack(const Eigen::Vector3i& key) {
@@ -71,7 +72,7 @@ class SurfacePoints {
   const Element* Find(std::uint64_t key) const;
 
   // Distance from p_map to the element, negative directly behind an
-  // oriented disk: the disk (planar) or the mean point (not planar).
+  // oriented disk when signed: the disk (planar) or the mean point (not planar).
   // Inline: the export calls it for every cell near a surface.
   float SignedDistance(const Element& element, const Eigen::Vector3f& p_map) const {
     const Eigen::Vector3f r = p_map - element.mean_m;
@@ -80,7 +81,7 @@ class SurfacePoints {
     const float height = r.dot(element.normal);
     const float lateral_sq = std::max(0.0f, r.squaredNorm() - height * height);
     if (lateral_sq <= patch_radius_sq_m2_) {
-      return element.oriented && height < 0.0f ? height : std::abs(height);  // negative behind
+      return signed_ && element.oriented && height < 0.0f ? height : std::abs(height);  // negative behind
     }
     const float outside = std::sqrt(lateral_sq) - patch_radius_m_;
     return std::sqrt(height * height + outside * outside);
@@ -107,6 +108,7 @@ class SurfacePoints {
   Entry PooledMoments(std::uint64_t key) const;
 
   float resolution_m_;
+  bool signed_;               // SignedDistance is negative behind oriented disks
   float patch_radius_m_;      // kPatchRadius * resolution_m_
   float patch_radius_sq_m2_;  // its square
   std::unordered_map<std::uint64_t, Entry> entries_;

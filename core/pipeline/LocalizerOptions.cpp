@@ -56,11 +56,30 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   o.map.resolution_m = core.distance_map_resolution_m;
   o.map.max_range_m = core.distance_map_max_range_m;
   o.gpf.voxel_size_m = core.distance_map_resolution_m;
-  // Odometry mode keeps voxel-centre distances: with sub-voxel surfaces the
-  // full simulated tunnel (rotating Hokuyo) diverged (ATE 5197 m vs 0.79 m
-  // without), while a 150 s segment was on par. Localisation in a fixed prior
-  // map turns them on (unimap localize).
-  o.map.subvoxel_surfaces = false;
+  // Distances to the surface inside each voxel, as magnitudes, instead of
+  // to voxel centres (up to half a voxel off the surface). In the hallway at
+  // 31.7 rpm the voxel-centre estimate kept a 0.5 deg pitch error from its
+  // start, which leaked gravity into the travel direction until it ran
+  // backwards. Signed distances (negative behind a surface) turned the
+  // tunnel's heading (yaw error 0.87 deg). Measured with the line gate
+  // below, ATE voxel centres -> unsigned surfaces: tunnel 0.316 -> 0.065 m
+  // (map error 0.047 -> 0.016 m), hallway seeds 4 / 5 / 6 0.077 / 0.125 /
+  // 0.141 -> 0.102 / 0.117 / 0.063 m, hallway at 31.7 rpm diverged ->
+  // 0.098 m; corridor (fixed VLP-16, no gate) 0.072 -> 0.018 m, patio
+  // (rotating VLP-16) 0.083 -> 0.080 m.
+  o.map.subvoxel_surfaces = true;
+  o.map.signed_surfaces = false;
+  // Line scans: points farther than 1.5 voxels from the map at the
+  // predicted pose are not measured. A line reaches past what the map
+  // holds (the frontier ahead, the far walls between the stripes earlier
+  // lines left), and measured against the nearest surface the map does hold
+  // such points pull the pose back: hallway ATE, seeds 4 / 5 / 6, without
+  // the gate 0.382 / 0.488 / 0.245 m. An error larger than the gate cannot
+  // be corrected by the points it leaves out: at 1 voxel the tunnel slipped
+  // 3.5 m while hovering (ATE 1.46 m; hallway 0.075 / 0.093 / 0.050 m).
+  // A 3D LiDAR's scans keep every point: with 2 voxels the corridor's ATE
+  // (fixed VLP-16) went from 0.072 to 0.204 m.
+  o.line_max_predicted_distance_m = 1.5 * core.distance_map_resolution_m;
   // Gauss-Newton refinement of every GPF match (PoseRefiner): the plain
   // GPF's Monte-Carlo noise (ESS near K when the tempered likelihood is
   // flatter than the prediction) made the hallway (rotating Hokuyo) diverge
@@ -81,30 +100,15 @@ void LocalizerOptions::UsePlaneMatching() {
   line_gap_fill.reset();
 }
 
-void LocalizerOptions::GateLinePoints() {
-  // A line reaching past what the map holds (the half of the horizon the
-  // first 3D scan of a rotating 2D LiDAR did not see, the frontier ahead) is
-  // pulled towards what the map holds: the hallway's travel was
-  // under-estimated (trajectory_scale 0.96). Line points farther than 1.5
-  // voxels from the map at the predicted pose are not measured. Hallway ATE,
-  // seeds 4 / 5 / 6: 0.533 / 0.605 / 0.398 m -> 0.077 / 0.125 / 0.141 m (1.2
-  // voxels: 0.053 / 0.137 / 0.182; 2: 0.148 / 6.2 / 0.167); tunnel drift
-  // 0.44 -> 0.11 %, map error 0.057 -> 0.047 m. A 3D LiDAR's scans keep
-  // every point: with 2 voxels the corridor's ATE (fixed VLP-16) went from
-  // 0.072 to 0.204 m (its rings, too, leave stripes on the floor).
-  // At 31.7 rpm, where line azimuths precess, the hallway diverged with
-  // every limit tried (1.2 / 1.5 / 2 voxels: ATE 688 / 263 / 487 m, 0.61 m
-  // without): once the estimate lags by more than the limit, the points that
-  // would pull it forward are the ones left out. Hence off by default.
-  line_max_predicted_distance_m = 1.5 * map.resolution_m;
-}
-
 LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   LocalizerOptions o = FromPlatform(core);
   o.localize_only = true;
-  // A fixed map: distances to the surface inside each voxel, not to voxel
-  // centres (20 s tunnel, rotating Hokuyo: position RMSE 0.014 m vs 0.062 m).
+  // A fixed map: distances to the surface inside each voxel, signed (20 s
+  // tunnel, rotating Hokuyo: position RMSE 0.014 m vs 0.062 m to voxel
+  // centres). The map is complete: every line point is measured.
   o.map.subvoxel_surfaces = true;
+  o.map.signed_surfaces = true;
+  o.line_max_predicted_distance_m = 0.0;
   // The field is computed once, not grown, so the coarse grid a payload maps
   // with for speed (rotating VLP-16: 0.3 m, the paper's patio value) is not
   // needed. Full 912 s tunnel flight, rotating VLP-16 in its true map: at

@@ -29,7 +29,7 @@ struct LocalizerOptions {
   int min_points_to_match = 30;     // scans with fewer body points are inserted unmatched
   double line_max_predicted_distance_m = 0.0;  // > 0: line scans' points farther than this from the
                                     // map at the predicted pose are not measured (GaussianParticleFilter::
-                                    // Match; GateLinePoints). 0: all measured
+                                    // Match; FromPlatform: 1.5 voxels). 0: all measured
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)
@@ -53,10 +53,6 @@ struct LocalizerOptions {
   // instead of across the surface, a point beside it pulls the pose along
   // the surface (docs/mapping.md, known limitation).
   void UsePlaneMatching();
-  // `unimap run --gate-line-points`: line_max_predicted_distance_m = 1.5
-  // distance-map voxels (docs/mapping.md: helps at a motor rate
-  // commensurate with the line rate, diverged at an incommensurate one).
-  void GateLinePoints();
   // Shared defaults with the platform's N, sigmas, resolution and max range.
   static LocalizerOptions FromPlatform(const CoreParameters& core);
   // FromPlatform tuned for tracking in a fixed, complete prior map (unimap

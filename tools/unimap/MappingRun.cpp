@@ -29,7 +29,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     mapper_options.loop_search.enabled = !options.no_loop_closure;
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
-    if (options.gate_line_points) mapper_options.localizer.GateLinePoints();
+    if (options.measure_all_line_points) mapper_options.localizer.line_max_predicted_distance_m = 0.0;
     if (!estimation::ParseMotionSource(options.motion, &mapper_options.localizer.motion.source)) {
       throw InputError("--motion: unknown source '" + options.motion + "' (imu, odometry, constant-velocity)");
     }

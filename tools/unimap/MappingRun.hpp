@@ -14,7 +14,8 @@ struct MappingRunOptions {
   bool quiet = false;           // no progress line
   bool no_loop_closure = false;  // map without loop-closure search
   bool no_line_gap_fill = false;  // line scans: the distance map holds the measured stripes only
-  bool gate_line_points = false;  // line scans: points far from the map at the prediction are not measured
+  bool measure_all_line_points = false;  // line scans: also measure points far from the map at the
+                                         // prediction (LocalizerOptions::line_max_predicted_distance_m 0)
   bool plane_matching = false;   // odometry matches points against neighbourhood planes only
                                  // (LocalizerOptions::UsePlaneMatching)
   std::string motion = "imu";    // prediction source: imu, odometry (odometry.csv) or constant-velocity

@@ -27,9 +27,9 @@ void AddRunCommand(CLI::App* app) {
   cmd->add_flag("--no-line-gap-fill", options->no_line_gap_fill,
                 "Line scans (rotating 2D LiDARs): do not fill the distance map's surface between consecutive "
                 "lines; it then holds only the measured stripes (docs/mapping.md)");
-  cmd->add_flag("--gate-line-points", options->gate_line_points,
-                "Line scans (rotating 2D LiDARs): points farther than 1.5 voxels from the map at the predicted "
-                "pose are not measured; helps at 30 rpm, diverged with the motor at 31.7 rpm (docs/mapping.md)");
+  cmd->add_flag("--measure-all-line-points", options->measure_all_line_points,
+                "Line scans (rotating 2D LiDARs): also measure the points farther than 1.5 voxels from the map "
+                "at the predicted pose, which are left out by default (docs/mapping.md)");
   cmd->add_option("--motion", options->motion,
                   "Prediction between scans: imu (default), odometry (the dataset's odometry.csv) or "
                   "constant-velocity, for data without an IMU")

@@ -62,6 +62,47 @@ TEST(LineGapFillTest, LeavesDepthJumpsHolesAndPausesOpen) {
   }
 }
 
+double Deg(double degrees) { return degrees * kPi / 180.0; }
+
+// The wall x = 0.5 seen at azimuths 76-78 deg: the gaps between lines run
+// along the wall, 76.5-77.5 deg from the beams' normal incidence.
+TEST(LineGapFillTest, FillsAGrazingWallWhereTheBeamsGapsContinue) {
+  LineGapFill fill(LineGapFillOptions{});
+  fill.Add(0.0, Eigen::Vector3f::Zero(), WallLine(Deg(76.0), 0.5f));
+  // Past max_incidence_deg (75) with no previous gap to continue: open.
+  EXPECT_TRUE(fill.Add(0.025, Eigen::Vector3f::Zero(), WallLine(Deg(77.0), 0.5f)).empty());
+  // The next gap of every beam continues the last one along the wall: filled.
+  const std::vector<Eigen::Vector3f> filled = fill.Add(0.05, Eigen::Vector3f::Zero(), WallLine(Deg(78.0), 0.5f));
+  ASSERT_GE(filled.size(), 21u * 3u);  // gaps of 0.19-0.22 m at 0.05 m steps: at least 3 points each
+  for (const Eigen::Vector3f& p : filled) {
+    EXPECT_NEAR(p.x(), 0.5f, 1e-5f);  // on the wall
+    EXPECT_GT(p.y(), 0.5f * std::tan(Deg(77.0)) - 1e-4);
+    EXPECT_LT(p.y(), 0.5f * std::tan(Deg(78.0)) * 1.1);
+  }
+}
+
+TEST(LineGapFillTest, LeavesGrazingDepthJumpsAndGapsBeyondTheGrazingLimitOpen) {
+  {  // Two lines on the grazing wall, the third on something 0.1 m nearer
+     // (83 deg from normal incidence, within the grazing limit): the gap
+     // turns back towards the sensor.
+    LineGapFill fill(LineGapFillOptions{});
+    fill.Add(0.0, Eigen::Vector3f::Zero(), WallLine(Deg(76.0), 0.5f));
+    fill.Add(0.025, Eigen::Vector3f::Zero(), WallLine(Deg(77.0), 0.5f));
+    EXPECT_TRUE(fill.Add(0.05, Eigen::Vector3f::Zero(), WallLine(Deg(78.0), 0.4f)).empty());
+    // The same three lines on the wall: filled (above).
+    LineGapFill same(LineGapFillOptions{});
+    same.Add(0.0, Eigen::Vector3f::Zero(), WallLine(Deg(76.0), 0.5f));
+    same.Add(0.025, Eigen::Vector3f::Zero(), WallLine(Deg(77.0), 0.5f));
+    EXPECT_FALSE(same.Add(0.05, Eigen::Vector3f::Zero(), WallLine(Deg(78.0), 0.5f)).empty());
+  }
+  {  // The wall x = 0.05 at 86-88 deg: past max_grazing_incidence_deg (85), never filled.
+    LineGapFill fill(LineGapFillOptions{});
+    fill.Add(0.0, Eigen::Vector3f::Zero(), WallLine(Deg(86.0), 0.05f));
+    fill.Add(0.025, Eigen::Vector3f::Zero(), WallLine(Deg(87.0), 0.05f));
+    EXPECT_TRUE(fill.Add(0.05, Eigen::Vector3f::Zero(), WallLine(Deg(88.0), 0.05f)).empty());
+  }
+}
+
 TEST(LineGapFillTest, PairsOnlyBeamsWithAReturnInBothLines) {
   const double step = 4.5 * kPi / 180.0;
   LineGapFill fill(LineGapFillOptions{});
@@ -107,6 +148,14 @@ TEST(LineGapFillTest, RejectsInvalidOptions) {
   o.max_incidence_deg = 90.0;
   EXPECT_FALSE(o.IsValid(&why));
   EXPECT_NE(why.find("max_incidence_deg"), std::string::npos);
+  o = LineGapFillOptions{};
+  o.max_grazing_incidence_deg = 70.0;  // below max_incidence_deg
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("max_grazing_incidence_deg"), std::string::npos);
+  o = LineGapFillOptions{};
+  o.max_turn_deg = 90.0;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("max_turn_deg"), std::string::npos);
   o = LineGapFillOptions{};
   o.max_line_interval_s = -1.0;
   EXPECT_FALSE(o.IsValid(&why));

@@ -34,8 +34,9 @@ std::vector<V3> SamplePlane(const V3& centre, const V3& normal, float half_m, in
   return points;
 }
 
-DistanceMapOptions PlaneOptions(bool subvoxel) {
+DistanceMapOptions PlaneOptions(bool subvoxel, bool signed_surfaces = true) {
   DistanceMapOptions options;
+  options.signed_surfaces = signed_surfaces;
   options.resolution_m = kRes;
   options.max_range_m = 4.0;
   options.clamp_distance_m = 0.5;
@@ -45,8 +46,8 @@ DistanceMapOptions PlaneOptions(bool subvoxel) {
 
 // The published field after one scan of the plane seen from sensor.
 std::shared_ptr<const DistanceField> PlaneField(bool subvoxel, const V3& centre, const V3& normal,
-                                                const V3& sensor) {
-  DistanceMap map(PlaneOptions(subvoxel));
+                                                const V3& sensor, bool signed_surfaces = true) {
+  DistanceMap map(PlaneOptions(subvoxel, signed_surfaces));
   map.InsertScan(SamplePlane(centre, normal, 2.0f, 40000, 11), sensor);
   map.WaitForUpdates();
   return map.Snapshot();
@@ -103,16 +104,22 @@ TEST(SurfacePoints, MeanFollowsTheReturnsThenForgetsExponentially) {
   EXPECT_EQ(surfaces.size(), 0u);
 }
 
-TEST(SurfacePoints, PlanarReturnsSeenFromOneSideGiveASignedDiskDistance) {
-  SurfacePoints surfaces(kRes);
+// Voxel (0, 0, 0) of surfaces given returns of the plane z = 0.02 seen from
+// above; its element (null when it has none).
+const SurfacePoints::Element* SeenFromAbove(SurfacePoints* surfaces) {
   const std::uint64_t key = SurfacePoints::Pack(Eigen::Vector3i(0, 0, 0));
   const V3 centre(0.05f, 0.05f, 0.05f);
   const V3 sensor(0.3f, -0.2f, 2.0f);
   for (const V3& p : SamplePlane(V3(0.05f, 0.05f, 0.02f), V3::UnitZ(), 0.05f, 30, 3)) {
-    surfaces.Add(key, centre, p, &sensor);
+    surfaces->Add(key, centre, p, &sensor);
   }
-  surfaces.Refresh(key, centre);
-  const SurfacePoints::Element* element = surfaces.Find(key);
+  surfaces->Refresh(key, centre);
+  return surfaces->Find(key);
+}
+
+TEST(SurfacePoints, PlanarReturnsSeenFromOneSideGiveASignedDiskDistance) {
+  SurfacePoints surfaces(kRes);
+  const SurfacePoints::Element* element = SeenFromAbove(&surfaces);
   ASSERT_NE(element, nullptr);
   ASSERT_TRUE(element->planar);
   EXPECT_TRUE(element->oriented);
@@ -155,6 +162,17 @@ TEST(SurfacePoints, ScanLinesTakeTheNormalAcrossThemTowardsTheSensor) {
   EXPECT_FALSE(surfaces.Find(unviewed)->planar);
   EXPECT_NEAR(surfaces.SignedDistance(*surfaces.Find(unviewed), V3(0.045f, 0.05f, -0.2f)), 0.23f,
               1e-5f);
+}
+
+TEST(SurfacePoints, UnsignedSurfacesReadTheHeightBehindTheDiskAsAMagnitude) {
+  SurfacePoints surfaces(kRes, /*signed_distances=*/false);
+  const SurfacePoints::Element* element = SeenFromAbove(&surfaces);
+  ASSERT_NE(element, nullptr);
+  ASSERT_TRUE(element->oriented);  // the element is the same; only the distance's sign goes
+  const V3 mean = element->mean_m;
+  EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.03f, 0.0f, 0.3f)), 0.3f, 1e-5f);
+  EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.0f, -0.04f, -0.07f)), 0.07f, 1e-5f);
+  EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.25f, 0.0f, 0.0f)), 0.1f, 1e-5f);
 }
 
 TEST(SurfacePoints, PlanesSeenFromNoSensorAreNotSigned) {
@@ -223,11 +241,13 @@ TEST(SurfacePoints, TiltedPlaneReadsZeroOnThePlane) {
   }
 }
 
-// Every exported cell near the middle of the plane holds its exact signed
-// distance to it (the voxels' means lie on the plane, their normals are exact).
-TEST(SurfacePoints, ExportedCellsHoldTheSignedDistanceToThePlane) {
+// Checks that every exported cell near the middle of the plane z = 0.062
+// seen from above holds its exact distance to it (the voxels' means lie on
+// the plane, their normals are exact): signed, or its magnitude.
+void ExpectCellsHoldTheDistanceToThePlane(bool signed_surfaces) {
   const float plane_z = 0.062f;
-  const auto field = PlaneField(true, V3(0.0f, 0.0f, plane_z), V3::UnitZ(), V3(0.1f, 0.2f, 1.0f));
+  const auto field =
+      PlaneField(true, V3(0.0f, 0.0f, plane_z), V3::UnitZ(), V3(0.1f, 0.2f, 1.0f), signed_surfaces);
   int checked = 0;
   for (int x = 0; x < field->dims().x(); ++x) {
     for (int y = 0; y < field->dims().y(); ++y) {
@@ -236,13 +256,20 @@ TEST(SurfacePoints, ExportedCellsHoldTheSignedDistanceToThePlane) {
         const V3 c = field->CellCentre(cell);
         if (c.head<2>().cwiseAbs().maxCoeff() > 1.2f) continue;  // 0.8 m from the plane's edges
         const float truth = std::clamp(c.z() - plane_z, -field->clamp(), field->clamp());
-        ASSERT_NEAR(field->CellValue(cell), truth, 1e-3f) << c.transpose();
+        ASSERT_NEAR(field->CellValue(cell), signed_surfaces ? truth : std::abs(truth), 1e-3f) << c.transpose();
         ASSERT_NEAR(field->CellDistance(cell), std::abs(truth), 1e-3f);
         ++checked;
       }
     }
   }
   EXPECT_EQ(checked, 24 * 24 * 11);  // 0.1 m columns within 1.2 m, 11 layers
+}
+
+TEST(SurfacePoints, ExportedCellsHoldTheSignedDistanceToThePlane) { ExpectCellsHoldTheDistanceToThePlane(true); }
+
+// Unsigned surfaces (odometry's default): the magnitude on both sides.
+TEST(SurfacePoints, ExportedUnsignedCellsHoldTheDistanceToThePlane) {
+  ExpectCellsHoldTheDistanceToThePlane(false);
 }
 
 // The standard OctoMap insertion frees voxels inside the tree; their

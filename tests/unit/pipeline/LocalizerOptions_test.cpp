@@ -28,7 +28,9 @@ TEST(LocalizerOptionsTest, FromPlatformTakesThePlatformsValues) {
   EXPECT_DOUBLE_EQ(o.gpf.voxel_size_m, 0.3);
   EXPECT_DOUBLE_EQ(o.map.max_range_m, 15.0);
   EXPECT_FALSE(o.localize_only);
-  EXPECT_FALSE(o.map.subvoxel_surfaces);
+  // Odometry: unsigned distances to the surfaces inside the voxels.
+  EXPECT_TRUE(o.map.subvoxel_surfaces);
+  EXPECT_FALSE(o.map.signed_surfaces);
 }
 
 TEST(LocalizerOptionsTest, ForPriorMapCapsACoarsePlatformResolution) {
@@ -54,6 +56,7 @@ TEST(LocalizerOptionsTest, ForPriorMapTunesForAFixedMap) {
   const LocalizerOptions prior = LocalizerOptions::ForPriorMap(WithResolution(0.1));
   EXPECT_TRUE(prior.localize_only);
   EXPECT_TRUE(prior.map.subvoxel_surfaces);
+  EXPECT_TRUE(prior.map.signed_surfaces);
   EXPECT_EQ(prior.gpf.refine_iterations, 0);
   EXPECT_GT(odometry.gpf.refine_iterations, 0);
   // Wider particles than odometry's.
@@ -100,12 +103,12 @@ TEST(LocalizerOptionsTest, LineGapFillIsOnByDefaultAndChecked) {
   EXPECT_TRUE(o.IsValid(&why)) << why;
 }
 
-TEST(LocalizerOptionsTest, GatingLinePointsIsOffByDefault) {
+TEST(LocalizerOptionsTest, LinePointsAreGatedAtOneAndAHalfVoxelsExceptInAPriorMap) {
   LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
-  EXPECT_EQ(o.line_max_predicted_distance_m, 0.0);
+  EXPECT_NEAR(o.line_max_predicted_distance_m, 0.15, 1e-12);
+  EXPECT_NEAR(LocalizerOptions::FromPlatform(WithResolution(0.3)).line_max_predicted_distance_m, 0.45, 1e-12);
+  // A complete prior map: every point is measured.
   EXPECT_EQ(LocalizerOptions::ForPriorMap(WithResolution(0.1)).line_max_predicted_distance_m, 0.0);
-  o.GateLinePoints();  // unimap run --gate-line-points
-  EXPECT_NEAR(o.line_max_predicted_distance_m, 0.15, 1e-12);  // 1.5 voxels
   std::string why;
   EXPECT_TRUE(o.IsValid(&why)) << why;
   o.line_max_predicted_distance_m = -0.1;
