@@ -10,4 +10,6 @@ run() { "$exe" "$@" >>"$log" 2>&1; echo $?; }
 expect() { grep -Eq -- "$1" "$log" || fail "expected /$1/"; }
 json_number() {  # json_number FILE KEY: the number after "KEY": (top level or nested)
   sed -n "s/^ *\"$2\": \([-0-9.eE+]*\),\{0,1\}$/\1/p" "$1" | head -1; }
+json_array() {  # json_array FILE KEY: the numbers of the array after "KEY":, one a line
+  tr -d '\n ' < "$1" | sed -n "s/.*\"$2\":\[\([^]]*\)\].*/\1/p" | tr ',' '\n'; }
 below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a != "" && a + 0 < b + 0) }'; }

@@ -30,11 +30,16 @@ const StampedPose* Nearest(const std::vector<StampedPose>& poses, double time_s,
 }
 
 // Errors of estimate (moved into the truth's frame by T_truth_estimate) against truth.
-JsonObject ErrorsAt(const Eigen::Isometry3d& T_truth_estimate, const StampedPose& estimate, const StampedPose& truth) {
+PositionErrorAt ErrorsAt(const Eigen::Isometry3d& T_truth_estimate, const StampedPose& estimate,
+                         const StampedPose& truth) {
   const Eigen::Vector3d d = (T_truth_estimate * estimate.T_map_body).translation() - truth.T_map_body.translation();
+  return {std::abs(d.z()), d.norm()};
+}
+
+JsonObject ErrorsJson(const PositionErrorAt& e) {
   JsonObject o;
-  o.Add("height_error_m", std::abs(d.z()));
-  o.Add("position_error_m", d.norm());
+  o.Add("height_error_m", e.height_error_m);
+  o.Add("position_error_m", e.position_error_m);
   return o;
 }
 
@@ -72,23 +77,29 @@ JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline:
   return o;
 }
 
-JsonObject LoopPointErrors(const std::vector<StampedPose>& odometry, const std::vector<StampedPose>& optimized,
-                           const std::vector<StampedPose>& truth, double time_s) {
+std::optional<LoopPointErrors> ComputeLoopPointErrors(const std::vector<StampedPose>& odometry,
+                                                      const std::vector<StampedPose>& optimized,
+                                                      const std::vector<StampedPose>& truth, double time_s) {
   constexpr double kMaxDt = 0.1;
   const StampedPose* before = Nearest(odometry, time_s, kMaxDt);
   const StampedPose* after = Nearest(optimized, time_s, kMaxDt);
   const StampedPose* true_pose = Nearest(truth, time_s, kMaxDt);
-  JsonObject o;
-  if (before == nullptr || after == nullptr || true_pose == nullptr || odometry.empty()) return o;
+  if (before == nullptr || after == nullptr || true_pose == nullptr) return std::nullopt;
   const StampedPose* true_start = Nearest(truth, odometry.front().time_s, kMaxDt);
-  if (true_start == nullptr) return o;
+  if (true_start == nullptr) return std::nullopt;
   // Start-anchored on position and heading (as drift_percent): both
   // trajectories begin in the local frame, which the first (fixed) graph node keeps.
   const Eigen::Isometry3d T_truth_estimate =
       eval::AnchorTransform(true_start->T_map_body, odometry.front().T_map_body, eval::Anchor::kYawPosition);
-  o.Add("time_s", time_s);
-  o.Add("odometry", ErrorsAt(T_truth_estimate, *before, *true_pose));
-  o.Add("optimized", ErrorsAt(T_truth_estimate, *after, *true_pose));
+  return LoopPointErrors{time_s, ErrorsAt(T_truth_estimate, *before, *true_pose),
+                         ErrorsAt(T_truth_estimate, *after, *true_pose)};
+}
+
+JsonObject LoopPointJson(const LoopPointErrors& errors) {
+  JsonObject o;
+  o.Add("time_s", errors.time_s);
+  o.Add("odometry", ErrorsJson(errors.odometry));
+  o.Add("optimized", ErrorsJson(errors.optimized));
   return o;
 }
 

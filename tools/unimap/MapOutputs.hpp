@@ -2,6 +2,7 @@
 // The mapping outputs of `unimap run`: the optimised trajectory (TUM and
 // KITTI), the map (PCD, PLY, OctoMap) and the mapper's counts for run.json.
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "JsonObject.hpp"
@@ -23,13 +24,30 @@ struct MapOutputOptions {
 JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
                            const MapOutputOptions& options);
 
-// Position errors (start-anchored on the first odometry pose's position and
-// heading, eval::AnchorTransform) of the odometry and the optimised
-// trajectories against the truth at time_s (the first loop closure), as
-// {"time_s", "odometry": {...}, "optimized": {...}} with
-// "height_error_m" (|dz|) and "position_error_m"; an empty object when no
-// pose lies within 0.1 s of time_s.
-JsonObject LoopPointErrors(const std::vector<StampedPose>& odometry, const std::vector<StampedPose>& optimized,
-                           const std::vector<StampedPose>& truth, double time_s);
+// Position error of one pose against the truth at the same time.
+struct PositionErrorAt {
+  double height_error_m = 0.0;    // |dz|
+  double position_error_m = 0.0;  // |d|
+};
+
+// The errors at the first loop closure (issue 5: "height error at the loop
+// point, before and after"), start-anchored on the first odometry pose's
+// position and heading (eval::AnchorTransform, as drift_percent).
+struct LoopPointErrors {
+  double time_s = 0.0;          // the first loop closure's 3D scan
+  PositionErrorAt odometry;     // the filter's estimate, before optimisation
+  PositionErrorAt optimized;    // the optimised trajectory
+};
+
+// LoopPointErrors at time_s of the odometry and optimised trajectories
+// against the truth; nullopt when a trajectory has no pose within 0.1 s of
+// time_s (or the truth none at the odometry's start).
+std::optional<LoopPointErrors> ComputeLoopPointErrors(const std::vector<StampedPose>& odometry,
+                                                      const std::vector<StampedPose>& optimized,
+                                                      const std::vector<StampedPose>& truth, double time_s);
+
+// run.json's "loop_point": {"time_s", "odometry": {...}, "optimized": {...}},
+// each with "height_error_m" and "position_error_m".
+JsonObject LoopPointJson(const LoopPointErrors& errors);
 
 }  // namespace unimap::cli

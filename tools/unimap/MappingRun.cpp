@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "MapOutputs.hpp"
 #include "RunOutputs.hpp"
@@ -54,9 +55,10 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     const pipeline::MapperStats stats = mapper.stats();
     if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {
       const std::filesystem::path truth = std::filesystem::path(options.data_dir) / "groundtruth.tum";
-      outputs.extras.emplace_back(
-          "loop_point", LoopPointErrors(io::ReadTumTrajectory(out / kOdometryFile), mapper.OptimizedTrajectory(),
-                                        io::ReadTumTrajectory(truth), stats.first_loop_closure_time_s));
+      const std::optional<LoopPointErrors> loop_point =
+          ComputeLoopPointErrors(io::ReadTumTrajectory(out / kOdometryFile), mapper.OptimizedTrajectory(),
+                                 io::ReadTumTrajectory(truth), stats.first_loop_closure_time_s);
+      if (loop_point) outputs.extras.emplace_back("loop_point", LoopPointJson(*loop_point));
     }
     std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, "
               << stats.loop_closures << " loop closures, " << stats.optimisations << " optimisations\n";
