@@ -7,7 +7,8 @@
 
 namespace unimap::cli {
 
-// A flat JSON object built key by key, in insertion order (for run.json).
+// A JSON object built key by key, in insertion order (for run.json); a
+// value may be a nested object.
 class JsonObject {
  public:
   void Add(const std::string& key, double value) { Raw(key, Number(value)); }
@@ -21,15 +22,16 @@ class JsonObject {
     Raw(key, text + "]");
   }
   // Adds a nested object.
-  void Add(const std::string& key, const JsonObject& object) { Raw(key, object.ToString("  ")); }
+  void Add(const std::string& key, const JsonObject& object) { Raw(key, object.ToString()); }
 
-  std::string ToString(const std::string& indent = "") const {
+  // Two spaces per level; a nested object's lines are indented with its field.
+  std::string ToString() const {
     std::string text = "{\n";
     for (std::size_t i = 0; i < fields_.size(); ++i) {
-      text += indent + "  " + Quote(fields_[i].first) + ": " + fields_[i].second;
+      text += "  " + Quote(fields_[i].first) + ": " + Indented(fields_[i].second);
       text += i + 1 < fields_.size() ? ",\n" : "\n";
     }
-    return text + indent + "}";
+    return text + "}";
   }
 
  private:
@@ -40,6 +42,16 @@ class JsonObject {
     out.precision(10);
     out << v;
     return out.str();
+  }
+  // Each line after the first indented by two more spaces (values hold no
+  // raw newline but those of nested objects: Quote replaces control characters).
+  static std::string Indented(const std::string& value) {
+    std::string out;
+    for (const char c : value) {
+      out += c;
+      if (c == '\n') out += "  ";
+    }
+    return out;
   }
   static std::string Quote(const std::string& s) {
     std::string out = "\"";
