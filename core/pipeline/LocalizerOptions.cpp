@@ -86,6 +86,12 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // while static; odometry ATE with 5 steps: hallway diverged -> 0.84 m,
   // patio 0.22 -> 0.08 m, corridor 0.58 -> 0.20 m, tunnel 0.58 -> 0.54 m.
   o.gpf.refine_iterations = 5;
+  // The distance map is exact up to the particle filter's clamp (0.5 m, or
+  // one voxel if coarser) and reads that beyond: the likelihood and the
+  // refinement clamp there, and each metre of exact distance costs EDT
+  // propagation around every new surface and memory (1.0 m before; speed,
+  // memory and accuracy of both in docs/mapping.md, "Distance map clamp").
+  o.map.clamp_distance_m = std::max(o.gpf.clamp_distance_m, o.map.resolution_m);
   return o;
 }
 
@@ -116,6 +122,10 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // (position RMSE 7.9 m); at 0.1 m, 0.019 m.
   o.map.resolution_m = std::min(o.map.resolution_m, kPriorMapResolutionM);
   o.gpf.voxel_size_m = o.map.resolution_m;
+  // The field is computed once: the default clamp (unimap localize clamps a
+  // .pcd map's field at the particle filter's clamp itself; a .bt map's
+  // resolution is the file's and may be coarser).
+  o.map.clamp_distance_m = map::DistanceMapOptions{}.clamp_distance_m;
   // The plain GPF mean, without the Gauss-Newton refinement odometry uses:
   // in the true map (60 s of tunnel) refinement cost rotation accuracy
   // (rotation RMSE fixed VLP-16 0.120 -> 0.230 deg, rotating Hokuyo 0.216

@@ -33,6 +33,20 @@ TEST(LocalizerOptionsTest, FromPlatformTakesThePlatformsValues) {
   EXPECT_FALSE(o.map.signed_surfaces);
 }
 
+TEST(LocalizerOptionsTest, OdometryClampsTheDistanceMapWhereTheParticleFilterDoes) {
+  const LocalizerOptions fine = LocalizerOptions::FromPlatform(WithResolution(0.1));
+  EXPECT_DOUBLE_EQ(fine.map.clamp_distance_m, fine.gpf.clamp_distance_m);
+  EXPECT_DOUBLE_EQ(fine.map.clamp_distance_m, 0.5);
+  // Never below one voxel (DistanceMapOptions::IsValid).
+  const LocalizerOptions coarse = LocalizerOptions::FromPlatform(WithResolution(0.8));
+  EXPECT_DOUBLE_EQ(coarse.map.clamp_distance_m, 0.8);
+  std::string why;
+  EXPECT_TRUE(coarse.IsValid(&why)) << why;
+  // A prior map keeps the default; unimap localize sets its own.
+  EXPECT_DOUBLE_EQ(LocalizerOptions::ForPriorMap(WithResolution(0.1)).map.clamp_distance_m,
+                   map::DistanceMapOptions{}.clamp_distance_m);
+}
+
 TEST(LocalizerOptionsTest, ForPriorMapCapsACoarsePlatformResolution) {
   const LocalizerOptions o = LocalizerOptions::ForPriorMap(WithResolution(0.3));
   std::string why;
