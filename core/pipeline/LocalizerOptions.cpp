@@ -91,8 +91,12 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // refinement clamp there, and each metre of exact distance costs EDT
   // propagation around every new surface and memory (1.0 m before; speed,
   // memory and accuracy of both in docs/mapping.md, "Distance map clamp").
-  o.map.clamp_distance_m = std::max(o.gpf.clamp_distance_m, o.map.resolution_m);
+  o.ClampFieldAtLikelihood();
   return o;
+}
+
+void LocalizerOptions::ClampFieldAtLikelihood() {
+  map.clamp_distance_m = std::max(gpf.clamp_distance_m, map.resolution_m);
 }
 
 void LocalizerOptions::UsePlaneMatching() {

@@ -53,6 +53,10 @@ struct LocalizerOptions {
   // instead of across the surface, a point beside it pulls the pose along
   // the surface (docs/mapping.md, known limitation).
   void UsePlaneMatching();
+  // map.clamp_distance_m = the particle filter's clamp, at least one map
+  // voxel: the likelihood and the refinement read no farther (FromPlatform;
+  // unimap localize for a .pcd prior map, after setting its resolution).
+  void ClampFieldAtLikelihood();
   // Shared defaults with the platform's N, sigmas, resolution and max range.
   static LocalizerOptions FromPlatform(const CoreParameters& core);
   // FromPlatform tuned for tracking in a fixed, complete prior map (unimap

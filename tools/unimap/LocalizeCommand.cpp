@@ -1,7 +1,6 @@
 // `unimap localize`: track the pose of a dataset in a fixed prior map (an
 // OctoMap .bt or a .pcd point cloud), write the trajectory, run.json and,
 // with ground truth, the evaluation (estimate and truth share the map frame).
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -158,8 +157,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
       // clamped there too changes only lookups whose trilinear stencil
       // reaches past it, and lets a whole tunnel fit one box (WholeMapOptions).
       // (.bt maps keep the default clamp: their resolution is the file's.)
-      localizer_options.map.clamp_distance_m =
-          std::max(localizer_options.gpf.clamp_distance_m, localizer_options.map.resolution_m);
+      localizer_options.ClampFieldAtLikelihood();
     }
     io::DatasetReader reader(options.data_dir);
     WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
