@@ -147,6 +147,16 @@ const DatasetMetadata& DatasetReader::metadata() const { return impl_->metadata_
 
 bool DatasetReader::has_groundtruth() const { return impl_->groundtruth_ != nullptr; }
 
+bool DatasetReader::has_imu() {
+  if (!impl_->imu_ahead_) impl_->imu_ahead_ = impl_->ReadImu();
+  return impl_->imu_ahead_.has_value();
+}
+
+bool DatasetReader::has_odometry() {
+  if (!impl_->odometry_ahead_) impl_->odometry_ahead_ = impl_->ReadOdometry();
+  return impl_->odometry_ahead_.has_value();
+}
+
 std::optional<ImuSample> DatasetReader::NextImu() {
   return impl_->Take(&impl_->imu_ahead_, &Impl::ReadImu);
 }

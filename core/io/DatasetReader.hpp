@@ -34,6 +34,11 @@ class DatasetReader {
 
   const DatasetMetadata& metadata() const;
   bool has_groundtruth() const;
+  // True when the stream still holds a sample (reads its first one ahead,
+  // so a malformed first record throws InputError here). Before any Next*
+  // call: whether the dataset has IMU / wheel-odometry data at all.
+  bool has_imu();
+  bool has_odometry();
 
   std::optional<ImuSample> NextImu();
   std::optional<EncoderSample> NextEncoder();

@@ -19,9 +19,11 @@ double EventTime(const io::DatasetEvent& event) {
   return io::ScanEndTime(std::get<io::ScanRecord>(event));
 }
 
-void WritePoses(EventSink& localizer, io::TumTrajectoryWriter& trajectory, RunSummary* summary) {
+void WritePoses(EventSink& localizer, io::TumTrajectoryWriter& trajectory, const RunOptions& options,
+                RunSummary* summary) {
   for (const ScanPose& pose : localizer.TakePoses()) {
     trajectory.Write({pose.time_s, pose.T_map_body});
+    if (options.on_pose) options.on_pose(pose);
     ++summary->poses_written;
   }
 }
@@ -73,7 +75,7 @@ RunSummary RunDataset(io::DatasetReader& reader, EventSink& localizer, io::TumTr
       } else if (auto* odometry = std::get_if<OdometrySample>(&*event)) {
         localizer.AddOdometry(*odometry);
       }
-      WritePoses(localizer, trajectory, &summary);
+      WritePoses(localizer, trajectory, options, &summary);
       const auto now = Clock::now();
       if (options.on_progress && now - last_report > std::chrono::seconds(1)) {
         last_report = now;
@@ -85,7 +87,7 @@ RunSummary RunDataset(io::DatasetReader& reader, EventSink& localizer, io::TumTr
     summary.error = e.what();
   }
   localizer.Finish();
-  WritePoses(localizer, trajectory, &summary);
+  WritePoses(localizer, trajectory, options, &summary);
   trajectory.Close();
   summary.processing_s = std::chrono::duration<double>(Clock::now() - start).count();
   summary.data_duration_s = any ? last_time - first_time : 0.0;

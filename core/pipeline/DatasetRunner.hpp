@@ -21,6 +21,7 @@ struct RunOptions {
   double max_duration_s = 0.0;                 // stop after this much data time (0: all)
   const std::atomic<bool>* stop = nullptr;     // set (e.g. by SIGINT) to stop early
   std::function<void(const RunProgress&)> on_progress;  // optional
+  std::function<void(const ScanPose&)> on_pose;         // optional: every pose as it is written
 };
 
 // What a run did and how fast.

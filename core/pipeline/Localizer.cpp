@@ -233,6 +233,9 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     return;
   }
   last_scan_end_s_ = t_end;
+  // The pose is the body's at the deskewed scan's reference time: the end of
+  // the sweep, or the time a snapshot (already deskewed) cloud was taken.
+  const double t_ref = std::min(body.reference_time_s, t_end);
   std::vector<Eigen::Vector3f> points_body;
   points_body.reserve(body.points.size());
   for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
@@ -240,9 +243,11 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   // GPF -> pseudo measurement -> ESKF update (DESIGN.md 1.3). The state may
   // be a few ms past t_end (waiting for the encoder): the pose error is
   // applied to the current state.
-  const Eigen::Isometry3d T_predicted = history_.At(t_end);
+  const Eigen::Isometry3d T_predicted = history_.At(t_ref);
   matching::Vector6d correction = matching::Vector6d::Zero();
   bool matched = false;
+  ScanDiagnostics diagnostics;
+  diagnostics.predicted_sd = eskf_.PoseCovariance().diagonal().cwiseSqrt();
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const bool is_line = std::holds_alternative<LineScan>(scan);
@@ -250,8 +255,13 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
         gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
                    FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes),
                    is_line ? options_.line_max_predicted_distance_m : 0.0);
+    diagnostics.points_used = match.points_used;
+    diagnostics.points_unseen = match.points_unseen;
+    diagnostics.effective_sample_size = match.effective_sample_size;
     if (match.ok) {
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
+      diagnostics.measured_sd = match.measurement.R.diagonal().cwiseSqrt();
+      diagnostics.mahalanobis_sq = update.mahalanobis_sq;
       if (update.applied) {
         correction = update.error_correction;
         matched = true;
@@ -262,14 +272,18 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   const Eigen::Isometry3d T_map_body = estimation::ApplyPoseError(T_predicted, correction);
   if (matched) {
     history_.Clear();
-    if (t_end < eskf_.state().time_s) history_.Add(t_end, T_map_body);
+    if (t_ref < eskf_.state().time_s) history_.Add(t_ref, T_map_body);
     history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
-  poses_.push_back({t_end, T_map_body, matched, static_cast<int>(points_body.size())});
-  if (prior_) prior_->Observe(t_end, T_map_body);
+  diagnostics.correction = correction;
+  diagnostics.velocity_m_s = eskf_.state().v_world_m_s;
+  diagnostics.accel_bias_m_s2 = eskf_.state().accel_bias_m_s2;
+  diagnostics.gyro_bias_rad_s = eskf_.state().gyro_bias_rad_s;
+  poses_.push_back({t_ref, T_map_body, matched, static_cast<int>(points_body.size()), diagnostics});
+  if (prior_) prior_->Observe(t_ref, T_map_body);
 
   const Eigen::Vector3f sensor_map =
-      (T_map_body * plugin_->BodyFromLidarAt(encoder_, t_end).translation()).cast<float>();
+      (T_map_body * plugin_->BodyFromLidarAt(encoder_, t_ref).translation()).cast<float>();
   if (options_.localize_only) {
     try {
       map_->UpdateSensorPosition(sensor_map);
@@ -295,7 +309,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
         matching::VoxelDownsample(accumulator_.Take(&origin, &filled), options_.map.resolution_m, 0, 0);
     try {
       KeyScan key;
-      if (on_key_scan_) key = {t_end, T_map_body, scan3d, origin};
+      if (on_key_scan_) key = {t_ref, T_map_body, scan3d, origin};
       if (!filled.empty()) {
         scan3d.insert(scan3d.end(), filled.begin(), filled.end());
         scan3d = matching::VoxelDownsample(scan3d, options_.map.resolution_m, 0, 0);

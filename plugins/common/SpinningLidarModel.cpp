@@ -14,6 +14,9 @@ constexpr const char* kRings = "lidar.rings";
 constexpr const char* kVerticalFov = "lidar.vertical_fov_deg";
 constexpr const char* kSpinRate = "lidar.spin_rate_hz";
 constexpr const char* kClockwise = "lidar.clockwise";
+constexpr const char* kTiming = "lidar.timing";
+constexpr const char* kTimingAzimuth = "azimuth";
+constexpr const char* kTimingNone = "none";
 
 
 }  // namespace
@@ -30,6 +33,13 @@ void SpinningLidarModel::AddTo(ParameterSet* set) const {
   set->Add({kClockwise, "", "head turns clockwise seen from +z (Velodyne heads do)",
             timing.clockwise, -std::numeric_limits<double>::infinity(),
             std::numeric_limits<double>::infinity(), {}});
+  set->Add({kTiming, "",
+            "firing time of points delivered without their own time: azimuth (a spinning head, "
+            "from each point's azimuth) or none (a snapshot at the sweep's start time: clouds "
+            "already deskewed, non-spinning sensors)",
+            std::string(point_timing == Timing::kAzimuth ? kTimingAzimuth : kTimingNone),
+            -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            {kTimingAzimuth, kTimingNone}});
   RangeLimitParameters::AddTo(limits, set);
 }
 
@@ -47,6 +57,14 @@ SpinningLidarModel SpinningLidarModel::FromMap(const ParameterMap& map) {
   model.timing.spin_rate_hz = map.GetDouble(kSpinRate);
   if (!(model.timing.spin_rate_hz > 0.0)) throw ConfigError("", 0, kSpinRate, "must be positive");
   model.timing.clockwise = map.GetBool(kClockwise);
+  const std::string point_timing = map.GetString(kTiming);
+  if (point_timing == kTimingAzimuth) {
+    model.point_timing = Timing::kAzimuth;
+  } else if (point_timing == kTimingNone) {
+    model.point_timing = Timing::kNone;
+  } else {
+    throw ConfigError("", 0, kTiming, "must be 'azimuth' or 'none', not '" + point_timing + "'");
+  }
   model.limits = RangeLimitParameters::FromMap(map);
   return model;
 }
@@ -55,6 +73,12 @@ BodyScan SpinningLidarModel::Deskew(const RawScan& scan, const MountQuery& T_bod
                                     const MotionQuery& T_world_body_at) const {
   if (scan.has_point_time) return DeskewScan(scan, T_body_lidar_at, T_world_body_at, limits);
   RawScan timed = scan;
+  if (point_timing == Timing::kNone) {
+    for (Point& p : timed.points) p.time_s = timed.start_time_s;
+    timed.end_time_s = timed.start_time_s;
+    timed.has_point_time = true;
+    return DeskewScan(timed, T_body_lidar_at, T_world_body_at, limits);
+  }
   timing.AssignPointTimes(&timed);  // throws InputError for an empty scan
   return DeskewScan(timed, T_body_lidar_at, T_world_body_at, limits);
 }

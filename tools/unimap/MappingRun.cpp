@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "MapOutputs.hpp"
+#include "MotionChoice.hpp"
 #include "RunOutputs.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
@@ -31,17 +32,18 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
     if (options.measure_all_line_points) mapper_options.localizer.line_max_predicted_distance_m = 0.0;
-    if (!estimation::ParseMotionSource(options.motion, &mapper_options.localizer.motion.source)) {
-      throw InputError("--motion: unknown source '" + options.motion + "' (imu, odometry, constant-velocity)");
-    }
     io::DatasetReader reader(options.data_dir);
+    const MotionChoice motion = ChooseMotion(options.motion, reader);
+    mapper_options.localizer.motion.source = motion.source;
+    std::cout << "motion: " << motion.name << " (" << motion.reason << ")\n";
     WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
     const std::filesystem::path out(options.out_dir);
     pipeline::Mapper mapper(mapper_options, platform.plugin.plugin);
     // The filter's own estimate streams to trajectory_odometry.tum; the
     // optimised trajectory and the map are written when the run ends.
     const pipeline::RunSummary summary =
-        RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet);
+        RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet,
+                        options.trace);
     MapOutputOptions map_options;
     map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
     const JsonObject mapping = WriteMapOutputs(out, mapper, map_options);
@@ -51,6 +53,8 @@ int RunMappingToFolder(const MappingRunOptions& options) {
                             options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
     outputs.odometry_file = kOdometryFile;
     outputs.map_file = "map.ply";  // (read without PCL)
+    outputs.motion = motion.name;
+    outputs.motion_reason = motion.reason;
     outputs.extras.emplace_back("mapping", mapping);
     const pipeline::MapperStats stats = mapper.stats();
     if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {

@@ -18,7 +18,9 @@ struct MappingRunOptions {
                                          // prediction (LocalizerOptions::line_max_predicted_distance_m 0)
   bool plane_matching = false;   // odometry matches points against neighbourhood planes only
                                  // (LocalizerOptions::UsePlaneMatching)
-  std::string motion = "imu";    // prediction source: imu, odometry (odometry.csv) or constant-velocity
+  bool trace = false;            // write trace.csv (ScanDiagnostics of every pose)
+  std::string motion = "auto";   // prediction source: auto (what the dataset holds), imu, odometry
+                                 // (odometry.csv) or constant-velocity
 };
 
 // Runs the Mapper over the dataset and writes trajectory_odometry.tum

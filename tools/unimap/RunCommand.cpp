@@ -20,6 +20,8 @@ void AddRunCommand(CLI::App* app) {
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->add_flag("--no-loop-closure", options->no_loop_closure, "Do not search for loop closures");
+  cmd->add_flag("--trace", options->trace,
+                "Also write trace.csv: per scan, how the localiser found its pose (points, particle weights, correction, standard deviations, velocity, IMU biases)");
   cmd->add_flag("--plane-matching", options->plane_matching,
                 "Odometry measures each scan point only across the map surface around it (a plane fitted to "
                 "the surface voxels near it; points without one are not measured): for rotating 2D LiDARs, "
@@ -31,9 +33,10 @@ void AddRunCommand(CLI::App* app) {
                 "Line scans (rotating 2D LiDARs): also measure the points farther than 1.5 voxels from the map "
                 "at the predicted pose, which are left out by default (docs/mapping.md)");
   cmd->add_option("--motion", options->motion,
-                  "Prediction between scans: imu (default), odometry (the dataset's odometry.csv) or "
-                  "constant-velocity, for data without an IMU")
-      ->check(CLI::IsMember({"imu", "odometry", "constant-velocity"}));
+                  "Prediction between scans: auto (default: the IMU if the dataset has one, else its wheel "
+                  "odometry, else constant velocity), imu, odometry (the dataset's odometry.csv) or "
+                  "constant-velocity")
+      ->check(CLI::IsMember({"auto", "imu", "odometry", "constant-velocity"}));
   cmd->callback([options]() {
     const int code = RunMappingToFolder(*options);
     if (code != 0) throw CLI::RuntimeError(code);

@@ -19,10 +19,30 @@
 #include "eval/TrajectoryAssociation.hpp"
 #include "eval/TrajectoryErrors.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
+#include "io/PartialFile.hpp"
 #include "io/TumTrajectory.hpp"
 
 namespace unimap::cli {
 namespace {
+
+// What to do when no scan was matched, from the localiser's counts.
+std::string NoMatchAdvice(const RunOutputsInput& in) {
+  const pipeline::LocalizerStats& s = in.stats;
+  if (s.scans_no_encoder == s.scans) {
+    return "Every scan lacked encoder coverage: the payload needs a motor encoder stream (encoder.csv) "
+           "covering the scans.";
+  }
+  if (s.scans_bad_input == s.scans) {
+    return "The payload rejected every scan (see the skip messages): check that the platform's plugin "
+           "matches the data.";
+  }
+  if (s.imu_samples == 0 && in.motion == "imu") {
+    return "The dataset has no IMU data: run with --motion odometry or --motion constant-velocity.";
+  }
+  return "Check that the platform file matches the sensor (payload, range limits, extrinsics) and see the "
+         "skip messages above.";
+}
+
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
@@ -113,6 +133,10 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run.Add("payload", in.payload);
   run.Add("dataset", in.data_dir);
   run.Add("gpf_threads", in.gpf_threads);
+  if (!in.motion.empty()) {
+    run.Add("motion", in.motion);
+    run.Add("motion_reason", in.motion_reason);
+  }
   run.Add("localizer", LocalizerStatsJson(in.stats));
   for (const auto& [key, object] : in.extras) run.Add(key, object);
   // The truth and the estimate, read once for every evaluation below.
@@ -179,12 +203,51 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     std::cerr << "error: " << in.data_dir << ": " << summary.error << " (outputs hold what was processed)\n";
     return 2;
   }
+  if (in.stats.scans > 0 && in.stats.scans_matched == 0) {
+    std::cerr << "error: " << in.data_dir << ": none of the " << in.stats.scans
+              << " scans was matched against the map, so the trajectory and the map hold no LiDAR "
+                 "information. "
+              << NoMatchAdvice(in) << '\n';
+    return 3;
+  }
   return 0;
 }
 
 namespace {
 std::atomic<bool> g_stop{false};
 extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
+
+std::string TraceHeader() {
+  return "# time_s,matched,points,points_used,points_unseen,ess,mahalanobis_sq,"
+         "corr_x,corr_y,corr_z,corr_rx,corr_ry,corr_rz,pred_sd_x,pred_sd_y,pred_sd_z,pred_sd_rx,pred_sd_ry,"
+         "pred_sd_rz,meas_sd_x,meas_sd_y,meas_sd_z,meas_sd_rx,meas_sd_ry,meas_sd_rz,vx,vy,vz,bax,bay,baz,bgx,"
+         "bgy,bgz\n";
+}
+
+std::string TraceLine(const pipeline::ScanPose& pose) {
+  const pipeline::ScanDiagnostics& d = pose.diagnostics;
+  char buffer[64];
+  std::string line;
+  const auto add = [&](double value) {
+    std::snprintf(buffer, sizeof(buffer), ",%.6g", value);
+    line += buffer;
+  };
+  std::snprintf(buffer, sizeof(buffer), "%.6f", pose.time_s);
+  line += buffer;
+  add(pose.matched ? 1 : 0);
+  add(pose.points);
+  add(d.points_used);
+  add(d.points_unseen);
+  add(d.effective_sample_size);
+  add(d.mahalanobis_sq);
+  for (int i = 0; i < 6; ++i) add(d.correction(i));
+  for (int i = 0; i < 6; ++i) add(d.predicted_sd(i));
+  for (int i = 0; i < 6; ++i) add(d.measured_sd(i));
+  for (int i = 0; i < 3; ++i) add(d.velocity_m_s(i));
+  for (int i = 0; i < 3; ++i) add(d.accel_bias_m_s2(i));
+  for (int i = 0; i < 3; ++i) add(d.gyro_bias_rad_s(i));
+  return line + "\n";
+}
 }  // namespace
 
 RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const std::string& platform_file,
@@ -205,10 +268,16 @@ RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const 
 
 pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventSink& sink,
                                      const std::filesystem::path& out_dir, const std::string& trajectory_file,
-                                     double max_duration_s, bool quiet) {
+                                     double max_duration_s, bool quiet, bool trace) {
   std::filesystem::create_directories(out_dir);
   io::TumTrajectoryWriter trajectory(out_dir / trajectory_file);
   pipeline::RunOptions run_options;
+  std::unique_ptr<io::PartialFile> trace_file;
+  if (trace) {
+    trace_file = std::make_unique<io::PartialFile>(out_dir / "trace.csv");
+    trace_file->Write(TraceHeader());
+    run_options.on_pose = [&trace_file](const pipeline::ScanPose& pose) { trace_file->Write(TraceLine(pose)); };
+  }
   run_options.max_duration_s = max_duration_s;
   run_options.stop = &g_stop;
   if (!quiet) run_options.on_progress = PrintRunProgress;
@@ -216,6 +285,7 @@ pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventS
   const auto previous = std::signal(SIGINT, OnSigint);
   const pipeline::RunSummary summary = pipeline::RunDataset(reader, sink, trajectory, run_options);
   std::signal(SIGINT, previous);
+  if (trace_file) trace_file->Commit();
   if (!quiet) std::fprintf(stderr, "\n");
   return summary;
 }

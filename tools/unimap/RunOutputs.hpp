@@ -23,6 +23,8 @@ struct RunOutputsInput {
   std::string payload;                 // run.json "payload" (plugin name)
   std::string data_dir;                // run.json "dataset"; its groundtruth.tum is the truth
   std::size_t gpf_threads = 1;         // run.json "gpf_threads"
+  std::string motion;                  // run.json "motion": the prediction used (empty: not reported)
+  std::string motion_reason;           // run.json "motion_reason": why
   pipeline::RunSummary summary;        // what the run did and how fast
   pipeline::LocalizerStats stats;      // the localiser's counts (run.json "localizer")
   bool has_groundtruth = false;        // the dataset has groundtruth.tum
@@ -65,10 +67,11 @@ RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const 
 
 // Runs the sink (Localizer or Mapper) over the dataset, streaming its poses
 // into out_dir/trajectory_file (creating out_dir), with a progress line
-// unless quiet; Ctrl-C stops the run and keeps what was processed.
+// unless quiet; Ctrl-C stops the run and keeps what was processed. With
+// trace, every pose's ScanDiagnostics also go to out_dir/trace.csv.
 pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventSink& sink,
                                      const std::filesystem::path& out_dir, const std::string& trajectory_file,
-                                     double max_duration_s, bool quiet);
+                                     double max_duration_s, bool quiet, bool trace = false);
 
 // Writes out_dir/run.json, prints the summary and skip messages, and with
 // ground truth (and at least two poses) evaluates trajectory.tum against it

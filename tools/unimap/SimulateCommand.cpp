@@ -11,6 +11,7 @@
 #include "Commands.hpp"
 #include "TextFormat.hpp"
 #include "Scenario.hpp"
+#include "ScenarioVariant.hpp"
 #include "Simulator.hpp"
 #include "WorldMap.hpp"
 #include "unimap/Errors.hpp"
@@ -25,6 +26,7 @@ struct SimulateOptions {
   std::optional<std::string> payload;   // platform file or plugin name
   std::optional<double> duration_s;     // stop early
   bool quiet = false;                   // no progress line
+  sim::ScenarioVariant variant;         // speed and IMU error scales
 };
 
 void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_file, const std::string& out) {
@@ -51,7 +53,7 @@ void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_f
 int RunSimulate(const SimulateOptions& options) {
   const bool show_progress = !options.quiet && isatty(STDERR_FILENO);
   try {
-    const sim::Scenario scenario = sim::LoadScenario(options.scenario);
+    const sim::Scenario scenario = sim::ApplyVariant(sim::LoadScenario(options.scenario), options.variant);
     sim::SimulationOptions run;
     run.out_dir = options.out;
     run.seed = options.seed;
@@ -97,6 +99,10 @@ void AddSimulateCommand(CLI::App* app) {
                   "Platform YAML or plugin name (its defaults) instead of the scenario's payload");
   cmd->add_option("--duration-s", options->duration_s, "Simulate only the first T seconds")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--speed-scale", options->variant.speed_scale,
+                  "The same path S times as fast (speed and yaw rate x S, acceleration x S^2, dwells / S)");
+  cmd->add_option("--imu-noise-scale", options->variant.imu_noise_scale, "IMU white noise x K");
+  cmd->add_option("--imu-bias-scale", options->variant.imu_bias_scale, "IMU start biases and bias walks x B");
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->callback([options]() {
     const int code = RunSimulate(*options);

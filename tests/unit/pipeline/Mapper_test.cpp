@@ -44,7 +44,7 @@ const MappedTunnel& Mapped() {
       io::TumTrajectoryWriter trajectory(file);
       RunDataset(reader, mapper, trajectory, RunOptions{});
     }
-    for (const StampedPose& p : io::ReadTumTrajectory(file)) out.streamed.push_back({p.time_s, p.T_map_body, true, 0});
+    for (const StampedPose& p : io::ReadTumTrajectory(file)) out.streamed.push_back({p.time_s, p.T_map_body, true, 0, {}});
     out.optimized = mapper.OptimizedTrajectory();
     out.map = mapper.MapPoints(0.1);
     out.stats = mapper.stats();

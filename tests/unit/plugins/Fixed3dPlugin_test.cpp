@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "PluginTestSupport.hpp"
+#include "unimap/Errors.hpp"
 #include "unimap/PayloadPlugin.hpp"
 
 namespace unimap {
@@ -161,6 +162,49 @@ TEST_F(Fixed3dPluginTest, KeepsPointTimesTheScanAlreadyHas) {
     ASSERT_EQ(out.points[i].time_s, sweep.scan.points[i].time_s) << i;
   }
   EXPECT_EQ(out.reference_time_s, end_s);
+}
+
+TEST_F(Fixed3dPluginTest, TimingNoneTakesAnUnstampedSweepAsASnapshotAtItsStart) {
+  // A sweep already deskewed (KITTI) or from a sensor that does not spin:
+  // no firing time is invented from the azimuth; every point is taken at the
+  // sweep's start time, which is also the reference time.
+  plugin_test::ConfigureWith(&plugin(), {{"lidar.timing", std::string("none")}});
+  Sweep sweep = MakeSweep(7.0, 30.0 * kDeg, /*clockwise=*/true);
+  sweep.scan.end_time_s = 7.1;  // the frame period a reader may give
+  const MotionQuery moving = [](double t) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(10.0 * t, 0.0, 0.0);  // 10 m/s: 1 m per 0.1 s
+    return T;
+  };
+  const BodyScan out = plugin().Deskew(sweep.scan, EncoderTrack(), moving);
+  ASSERT_EQ(out.points.size(), sweep.scan.points.size());
+  EXPECT_EQ(out.reference_time_s, 7.0);
+  const Eigen::Isometry3d T_body_lidar = plugin_test::PoseRpyDeg(Eigen::Vector3d(0.0, 0.0, 0.1), 0.0, 0.0, 0.0);
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    ASSERT_EQ(out.points[i].time_s, 7.0) << i;
+    ASSERT_LT((out.points[i].position_m - T_body_lidar * sweep.scan.points[i].position_m).norm(), 1e-12) << i;
+  }
+}
+
+TEST_F(Fixed3dPluginTest, TimingNoneKeepsPointTimesTheScanHas) {
+  plugin_test::ConfigureWith(&plugin(), {{"lidar.timing", std::string("none")}});
+  Sweep sweep = MakeSweep(2.0, 0.0, /*clockwise=*/true);
+  for (std::size_t i = 0; i < sweep.scan.points.size(); ++i) sweep.scan.points[i].time_s = sweep.true_time_s[i];
+  sweep.scan.end_time_s = sweep.true_time_s.back();
+  sweep.scan.has_point_time = true;
+  const BodyScan out = plugin().Deskew(sweep.scan, EncoderTrack(), plugin_test::StaticBody());
+  ASSERT_EQ(out.points.size(), sweep.scan.points.size());
+  for (std::size_t i = 0; i < out.points.size(); ++i) ASSERT_EQ(out.points[i].time_s, sweep.true_time_s[i]) << i;
+  EXPECT_EQ(out.reference_time_s, sweep.true_time_s.back());
+}
+
+TEST_F(Fixed3dPluginTest, TimingIsAzimuthOrNone) {
+  try {
+    plugin_test::ConfigureWith(&plugin(), {{"lidar.timing", std::string("rosette")}});
+    ADD_FAILURE() << "accepted lidar.timing rosette";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("lidar.timing"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
