@@ -9,5 +9,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
   build-essential cmake git ca-certificates pkg-config \
   libeigen3-dev liboctomap-dev libdynamicedt3d-dev libceres-dev \
   libboost-dev libboost-filesystem-dev libpcl-dev libyaml-cpp-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev libcli11-dev libspdlog-dev libstb-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev libcli11-dev libspdlog-dev libstb-dev robin-map-dev \
   libbz2-dev librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev

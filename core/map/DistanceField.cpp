@@ -67,7 +67,7 @@ DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vecto
       max_crossing_m_(kMaxCrossingSum * resolution_m),
       stride_x_(static_cast<std::size_t>(dims.y()) * static_cast<std::size_t>(dims.z())),
       stride_y_(static_cast<std::size_t>(dims.z())),
-      cells_(std::move(cells)),
+      clamp_code_(encoding == Encoding::kSigned ? static_cast<std::uint16_t>(kMaxSignedSteps << 1) : kMaxSteps),
       sequence_(sequence) {
   RequireClamp(clamp_m);
   if (!(std::isfinite(resolution_m) && resolution_m > 0.0f) || !origin_m.allFinite()) {
@@ -75,24 +75,98 @@ DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vecto
   }
   if ((dims.array() < 0).any()) throw InputError("DistanceField: negative grid size");
   const std::size_t expected = stride_x_ * static_cast<std::size_t>(dims.x());
-  if (expected != cells_.size()) {
+  if (expected != cells.size()) {
     throw InputError("DistanceField: grid " + std::to_string(dims.x()) + "x" +
                      std::to_string(dims.y()) + "x" + std::to_string(dims.z()) + " needs " +
-                     std::to_string(expected) + " cells, got " + std::to_string(cells_.size()));
+                     std::to_string(expected) + " cells, got " + std::to_string(cells.size()));
   }
-  if (encoding == Encoding::kSigned) FlagJumpingStencils();
+  if (encoding == Encoding::kSigned) FlagJumpingStencils(&cells);
+  StoreBlocks(cells);
 }
 
-void DistanceField::FlagJumpingStencils() {
+DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims,
+                             float resolution_m, float clamp_m, std::vector<std::shared_ptr<const Block>> blocks,
+                             std::uint64_t sequence)
+    : origin_m_(origin_m),
+      dims_(block_dims * kBlockEdge),
+      dims_f_((block_dims * kBlockEdge).cast<float>()),
+      resolution_m_(resolution_m),
+      inv_resolution_(1.0f / resolution_m),
+      clamp_m_(clamp_m),
+      step_m_(clamp_m / static_cast<float>(kMaxSteps)),
+      max_crossing_m_(kMaxCrossingSum * resolution_m),
+      stride_x_(static_cast<std::size_t>(dims_.y()) * static_cast<std::size_t>(dims_.z())),
+      stride_y_(static_cast<std::size_t>(dims_.z())),
+      block_dims_(block_dims),
+      block_stride_x_(static_cast<std::size_t>(block_dims.y()) * static_cast<std::size_t>(block_dims.z())),
+      block_stride_y_(static_cast<std::size_t>(block_dims.z())),
+      blocks_(std::move(blocks)),
+      sequence_(sequence) {
+  RequireClamp(clamp_m);
+  if (!(std::isfinite(resolution_m) && resolution_m > 0.0f) || !origin_m.allFinite()) {
+    throw InputError("DistanceField: resolution must be positive and the origin finite");
+  }
+  if ((block_dims.array() < 0).any()) throw InputError("DistanceField: negative grid size");
+  const std::size_t expected = block_stride_x_ * static_cast<std::size_t>(block_dims.x());
+  if (expected != blocks_.size()) {
+    throw InputError("DistanceField: " + std::to_string(block_dims.x()) + "x" + std::to_string(block_dims.y()) +
+                     "x" + std::to_string(block_dims.z()) + " blocks need " + std::to_string(expected) +
+                     " entries, got " + std::to_string(blocks_.size()));
+  }
+  for (const auto& block : blocks_) {
+    if (block != nullptr && block->size() != static_cast<std::size_t>(kBlockCells)) {
+      throw InputError("DistanceField: a block holds " + std::to_string(block->size()) + " cells, not " +
+                       std::to_string(kBlockCells));
+    }
+  }
+}
+
+void DistanceField::StoreBlocks(const std::vector<std::uint16_t>& cells) {
+  block_dims_ = (dims_.array() + kBlockMask) / kBlockEdge;
+  block_stride_x_ = static_cast<std::size_t>(block_dims_.y()) * static_cast<std::size_t>(block_dims_.z());
+  block_stride_y_ = static_cast<std::size_t>(block_dims_.z());
+  blocks_.assign(block_stride_x_ * static_cast<std::size_t>(block_dims_.x()), nullptr);
+  for (int bx = 0; bx < block_dims_.x(); ++bx) {
+    for (int by = 0; by < block_dims_.y(); ++by) {
+      for (int bz = 0; bz < block_dims_.z(); ++bz) {
+        auto block = std::make_shared<Block>(static_cast<std::size_t>(kBlockCells), clamp_code_);
+        bool stored = false;
+        for (int x = 0; x < kBlockEdge && bx * kBlockEdge + x < dims_.x(); ++x) {
+          for (int y = 0; y < kBlockEdge && by * kBlockEdge + y < dims_.y(); ++y) {
+            const std::size_t row = static_cast<std::size_t>(bx * kBlockEdge + x) * stride_x_ +
+                                    static_cast<std::size_t>(by * kBlockEdge + y) * stride_y_;
+            for (int z = 0; z < kBlockEdge && bz * kBlockEdge + z < dims_.z(); ++z) {
+              const std::uint16_t code = cells[row + static_cast<std::size_t>(bz * kBlockEdge + z)];
+              (*block)[static_cast<std::size_t>(BlockOffset(x, y, z))] = code;
+              stored = stored || code != clamp_code_;
+            }
+          }
+        }
+        if (stored) {
+          blocks_[static_cast<std::size_t>(bx) * block_stride_x_ + static_cast<std::size_t>(by) * block_stride_y_ +
+                  static_cast<std::size_t>(bz)] = std::move(block);
+        }
+      }
+    }
+  }
+}
+
+std::size_t DistanceField::StoredBlocks() const {
+  return static_cast<std::size_t>(
+      std::count_if(blocks_.begin(), blocks_.end(), [](const auto& block) { return block != nullptr; }));
+}
+
+void DistanceField::FlagJumpingStencils(std::vector<std::uint16_t>* cells_out) const {
+  std::vector<std::uint16_t>& cells = *cells_out;
   // Largest step difference along an edge that a surface can explain.
   const int max_steps = static_cast<int>(max_crossing_m_ / step_m_);
   const auto nx = static_cast<std::size_t>(dims_.x());
   const auto ny = static_cast<std::size_t>(dims_.y());
   const auto nz = static_cast<std::size_t>(dims_.z());
   // Per cell, the edges towards +z (bit 0), +y (bit 1) and +x (bit 2) that jump.
-  std::vector<std::uint8_t> jumps(cells_.size(), 0);
+  std::vector<std::uint8_t> jumps(cells.size(), 0);
   const auto jump = [&](std::size_t a, std::size_t b) {
-    const int difference = static_cast<int>(cells_[a] >> 1) - static_cast<int>(cells_[b] >> 1);
+    const int difference = static_cast<int>(cells[a] >> 1) - static_cast<int>(cells[b] >> 1);
     return static_cast<std::uint8_t>(std::abs(difference) > max_steps);
   };
   for (std::size_t x = 0; x < nx; ++x) {
@@ -123,7 +197,7 @@ void DistanceField::FlagJumpingStencils() {
         const int along_z = (jumps[i] | jumps[i + sy] | jumps[i + sx] | jumps[i + sx + sy]) & 1;
         const int along_y = (jumps[i] | jumps[i + 1] | jumps[i + sx] | jumps[i + sx + 1]) & 2;
         const int along_x = (jumps[i] | jumps[i + 1] | jumps[i + sy] | jumps[i + sy + 1]) & 4;
-        cells_[i] = static_cast<std::uint16_t>(cells_[i] | ((along_z | along_y | along_x) != 0));
+        cells[i] = static_cast<std::uint16_t>(cells[i] | ((along_z | along_y | along_x) != 0));
       }
     }
   }
@@ -132,14 +206,15 @@ void DistanceField::FlagJumpingStencils() {
 std::uint16_t DistanceField::Quantise(float distance_m, float clamp_m) {
   if (!(distance_m < clamp_m)) return kMaxSteps;  // also NaN
   if (distance_m <= 0.0f) return 0;
-  const float steps = std::round(distance_m / clamp_m * static_cast<float>(kMaxSteps));
+  // Round half up (the value is positive): cheaper than std::round in export loops.
+  const float steps = distance_m / clamp_m * static_cast<float>(kMaxSteps) + 0.5f;
   return static_cast<std::uint16_t>(std::min(steps, static_cast<float>(kMaxSteps)));
 }
 
 void DistanceField::SetPlanes(CellPlanes planes) {
-  if (planes.size() != cells_.size()) {
+  if (planes.size() != CellCount()) {
     throw InputError("DistanceField: " + std::to_string(planes.size()) + " cell planes for " +
-                     std::to_string(cells_.size()) + " cells");
+                     std::to_string(CellCount()) + " cells");
   }
   planes_ = std::move(planes);
 }
@@ -163,7 +238,7 @@ float DistanceField::CellDistance(const Eigen::Vector3i& cell) const {
 
 float DistanceField::CellValue(const Eigen::Vector3i& cell) const {
   if ((cell.array() < 0).any() || (cell.array() >= dims_.array()).any()) return clamp_m_;
-  return static_cast<float>(cells_[CellIndex(cell)] >> shift_) * step_m_ - offset_m_;
+  return static_cast<float>(Code(cell.x(), cell.y(), cell.z()) >> shift_) * step_m_ - offset_m_;
 }
 
 Eigen::Vector3f DistanceField::CellCentre(const Eigen::Vector3i& cell) const {
@@ -192,19 +267,26 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map,
   float c[8];
   bool jump = false;  // signed stencil whose sign changes cannot all be surfaces
   if ((i0.array() >= 0).all() && (i0.array() + 1 < dims_.array()).all()) {
-    // All eight centres inside: direct loads.
-    const std::uint16_t* base_cell = cells_.data() + static_cast<std::size_t>(i0.x()) * stride_x_ +
-                                     static_cast<std::size_t>(i0.y()) * stride_y_ +
-                                     static_cast<std::size_t>(i0.z());
-    for (int dx = 0; dx < 2; ++dx) {
-      for (int dy = 0; dy < 2; ++dy) {
-        const std::uint16_t* row = base_cell + static_cast<std::size_t>(dx) * stride_x_ +
-                                   static_cast<std::size_t>(dy) * stride_y_;
-        c[4 * dx + 2 * dy] = static_cast<float>(row[0] >> shift_) * step_m_ - offset_m_;
-        c[4 * dx + 2 * dy + 1] = static_cast<float>(row[1] >> shift_) * step_m_ - offset_m_;
+    // All eight centres inside.
+    std::uint16_t code[8];
+    if ((i0.x() & kBlockMask) != kBlockMask && (i0.y() & kBlockMask) != kBlockMask &&
+        (i0.z() & kBlockMask) != kBlockMask) {
+      // One block: direct loads (a missing block reads the clamp everywhere).
+      const Block* block = BlockAt(i0.x(), i0.y(), i0.z());
+      if (block == nullptr) {
+        if (gradient_map != nullptr) gradient_map->setZero();
+        return clamp_m_;
       }
+      const std::uint16_t* first =
+          block->data() + BlockOffset(i0.x() & kBlockMask, i0.y() & kBlockMask, i0.z() & kBlockMask);
+      constexpr int kStrideX = kBlockEdge * kBlockEdge;
+      constexpr int kStrideY = kBlockEdge;
+      for (int k = 0; k < 8; ++k) code[k] = first[(k >> 2) * kStrideX + ((k >> 1) & 1) * kStrideY + (k & 1)];
+    } else {
+      for (int k = 0; k < 8; ++k) code[k] = Code(i0.x() + (k >> 2), i0.y() + ((k >> 1) & 1), i0.z() + (k & 1));
     }
-    jump = (base_cell[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
+    for (int k = 0; k < 8; ++k) c[k] = static_cast<float>(code[k] >> shift_) * step_m_ - offset_m_;
+    jump = (code[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
   } else {
     for (int k = 0; k < 8; ++k) c[k] = CellValue(i0 + Eigen::Vector3i(k >> 2, (k >> 1) & 1, k & 1));
     jump = offset_m_ > 0.0f && JumpAlongAnEdge(c, max_crossing_m_);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -11,22 +12,35 @@
 
 namespace unimap::map {
 
-// Immutable snapshot of the distance map for lookups: a dense grid over an
-// axis-aligned box, aligned with the octree voxels, holding for every voxel
+// Immutable snapshot of the distance map for lookups: a grid over an
+// axis-aligned box, aligned with the map's voxels, holding for every voxel
 // the distance from its centre to the nearest surface (the nearest occupied
 // voxel centre, or that voxel's sub-voxel surface, see SurfacePoints),
-// clamped at clamp(). Distances are stored in 16 bits: kUnsigned as steps of
-// clamp() / 65535; kSigned as a distance in [-clamp(), clamp()] in 15 bits
-// (steps of 2 clamp() / 32767), negative behind a surface, bit 0 flagging
-// the cell's trilinear stencil (see kMaxCrossingSum). Lookups always return
-// magnitudes (>= 0): signs only let the trilinear interpolation cross zero
-// on a surface between two cell centres. Anything outside the box (and NaN)
-// reads clamp(). Safe to share between threads: nothing changes after
+// clamped at clamp(). Cells are stored in blocks of kBlockEdge^3 (a block
+// grid over the box); a block whose cells all read clamp() is not stored,
+// so memory follows the surfaces, not the box, and successive snapshots of
+// a growing map share the blocks that did not change (SurfaceDistanceMap).
+// Distances are stored in 16 bits: kUnsigned as steps of clamp() / 65535;
+// kSigned as a distance in [-clamp(), clamp()] in 15 bits (steps of
+// 2 clamp() / 32767), negative behind a surface, bit 0 flagging the cell's
+// trilinear stencil (see kMaxCrossingSum). Lookups always return magnitudes
+// (>= 0): signs only let the trilinear interpolation cross zero on a surface
+// between two cell centres. Anything outside the box (and NaN) reads
+// clamp(). Safe to share between threads: nothing changes after
 // construction.
 class DistanceField {
  public:
   // Largest quantised value; stands for clamp().
   static constexpr std::uint16_t kMaxSteps = 65535;
+  // Cells per block edge (a power of two) and per block.
+  static constexpr int kBlockShift = 3;
+  static constexpr int kBlockEdge = 1 << kBlockShift;
+  static constexpr int kBlockCells = kBlockEdge * kBlockEdge * kBlockEdge;
+  // One block's codes; the cell at (x, y, z) within it is at BlockOffset(x, y, z).
+  using Block = std::vector<std::uint16_t>;
+  static constexpr int BlockOffset(int x, int y, int z) {
+    return (x << (2 * kBlockShift)) | (y << kBlockShift) | z;
+  }
   // Largest 15-bit kSigned value; stands for +clamp() (0 for -clamp()).
   static constexpr std::uint16_t kMaxSignedSteps = 32767;
   // How cells encode distances.
@@ -55,6 +69,12 @@ class DistanceField {
   DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
                 float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence,
                 Encoding encoding);
+  // A kUnsigned field over block_dims blocks from origin_m, blocks[(bx *
+  // block_dims.y() + by) * block_dims.z() + bz] each kBlockCells codes or
+  // null (every cell reads clamp). Throws unimap::InputError when the sizes
+  // disagree or a value is invalid.
+  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims, float resolution_m,
+                float clamp_m, std::vector<std::shared_ptr<const Block>> blocks, std::uint64_t sequence);
 
   // The 16-bit code of a distance (values >= clamp_m map to kMaxSteps).
   static std::uint16_t Quantise(float distance_m, float clamp_m);
@@ -79,10 +99,12 @@ class DistanceField {
           fz < dims_f_.z())) {
       return clamp_m_;
     }
-    const std::size_t index = static_cast<std::size_t>(static_cast<int>(fx)) * stride_x_ +
-                              static_cast<std::size_t>(static_cast<int>(fy)) * stride_y_ +
-                              static_cast<std::size_t>(static_cast<int>(fz));
-    return std::abs(static_cast<float>(cells_[index] >> shift_) * step_m_ - offset_m_);
+    const Block* block = BlockAt(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz));
+    if (block == nullptr) return clamp_m_;
+    const std::uint16_t code = (*block)[static_cast<std::size_t>(
+        BlockOffset(static_cast<int>(fx) & kBlockMask, static_cast<int>(fy) & kBlockMask,
+                    static_cast<int>(fz) & kBlockMask))];
+    return std::abs(static_cast<float>(code >> shift_) * step_m_ - offset_m_);
   }
 
   // Trilinear interpolation between voxel centres (cells outside the box
@@ -117,17 +139,41 @@ class DistanceField {
   float clamp() const { return clamp_m_; }                     // clamp distance (m)
   Encoding encoding() const { return offset_m_ > 0.0f ? Encoding::kSigned : Encoding::kUnsigned; }
   std::uint64_t sequence() const { return sequence_; }         // updates integrated when exported
-  std::size_t CellCount() const { return cells_.size(); }
+  // Cells of the box (stored or not).
+  std::size_t CellCount() const {
+    return static_cast<std::size_t>(dims_.x()) * static_cast<std::size_t>(dims_.y()) *
+           static_cast<std::size_t>(dims_.z());
+  }
+  // Blocks stored (holding a cell below the clamp).
+  std::size_t StoredBlocks() const;
   std::size_t MemoryBytes() const {
-    return cells_.size() * sizeof(std::uint16_t) + planes_.MemoryBytes();
+    return StoredBlocks() * kBlockCells * sizeof(std::uint16_t) +
+           blocks_.size() * sizeof(std::shared_ptr<const Block>) + planes_.MemoryBytes();
   }
 
  private:
-  // Index of an in-grid cell in cells_ (and planes_).
+  static constexpr int kBlockMask = kBlockEdge - 1;
+  // Index of an in-grid cell in planes_ (x-y-z order over dims_).
   std::size_t CellIndex(const Eigen::Vector3i& cell) const {
     return static_cast<std::size_t>(cell.x()) * stride_x_ + static_cast<std::size_t>(cell.y()) * stride_y_ +
            static_cast<std::size_t>(cell.z());
   }
+  // The block holding in-grid cell (x, y, z), or null when it is not stored.
+  const Block* BlockAt(int x, int y, int z) const {
+    return blocks_[static_cast<std::size_t>(x >> kBlockShift) * block_stride_x_ +
+                   static_cast<std::size_t>(y >> kBlockShift) * block_stride_y_ +
+                   static_cast<std::size_t>(z >> kBlockShift)]
+        .get();
+  }
+  // The code of an in-grid cell (the clamp's code when its block is not stored).
+  std::uint16_t Code(int x, int y, int z) const {
+    const Block* block = BlockAt(x, y, z);
+    return block == nullptr ? clamp_code_
+                            : (*block)[static_cast<std::size_t>(
+                                  BlockOffset(x & kBlockMask, y & kBlockMask, z & kBlockMask))];
+  }
+  // Splits dense x-y-z cells into blocks (all-clamp blocks not stored).
+  void StoreBlocks(const std::vector<std::uint16_t>& cells);
 
   Eigen::Vector3f origin_m_ = Eigen::Vector3f::Zero();
   Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();
@@ -140,16 +186,20 @@ class DistanceField {
   int shift_ = 0;          // 1 when signed (bit 0 is the stencil flag)
   std::uint16_t flag_mask_ = 0;   // 1 when signed: the stencil flag
   float max_crossing_m_ = 0.0f;   // kMaxCrossingSum * resolution_m_
-  std::size_t stride_x_ = 0;
+  std::size_t stride_x_ = 0;  // x-y-z order over dims_ (planes_)
   std::size_t stride_y_ = 0;
-  std::vector<std::uint16_t> cells_;
+  Eigen::Vector3i block_dims_ = Eigen::Vector3i::Zero();  // blocks per axis
+  std::size_t block_stride_x_ = 0;
+  std::size_t block_stride_y_ = 0;
+  std::uint16_t clamp_code_ = kMaxSteps;  // the code every cell of a missing block reads
+  std::vector<std::shared_ptr<const Block>> blocks_;
   CellPlanes planes_;  // SetPlanes's; empty: none
   std::uint64_t sequence_ = 0;
 
-  // Sets the stencil flag of every cell whose stencil (itself up to +1 on
-  // every axis, all inside) has an edge whose values differ by more than
-  // max_crossing_m_ (kSigned only).
-  void FlagJumpingStencils();
+  // Sets the stencil flag of every cell of the dense x-y-z cells whose
+  // stencil (itself up to +1 on every axis, all inside) has an edge whose
+  // values differ by more than max_crossing_m_ (kSigned only).
+  void FlagJumpingStencils(std::vector<std::uint16_t>* cells) const;
 };
 
 }  // namespace unimap::map

@@ -8,6 +8,19 @@
 
 namespace unimap::map {
 
+// Time a map spent keeping itself up to date (wall seconds, summed).
+struct MapUpdateTimes {
+  double surface_s = 0.0;   // integrating returns into the surface (occupancy, elements)
+  double distance_s = 0.0;  // updating the distances
+  double export_s = 0.0;    // publishing fields
+  MapUpdateTimes& operator+=(const MapUpdateTimes& other) {
+    surface_s += other.surface_s;
+    distance_s += other.distance_s;
+    export_s += other.export_s;
+    return *this;
+  }
+};
+
 // What the localiser needs from a map: distance-field snapshots to match
 // against and a place to insert 3D scans. Implemented by DistanceMap (one
 // map, e.g. a prior) and SubmapManager (the paper's matching and growing
@@ -25,6 +38,8 @@ class ScanMap {
   // Blocks until everything queued so far is published; rethrows a
   // background update's error once.
   virtual void WaitForUpdates() = 0;
+  // Time spent on updates so far (zeros when the map does not measure it).
+  virtual MapUpdateTimes UpdateTimes() const { return {}; }
 };
 
 }  // namespace unimap::map

@@ -5,7 +5,7 @@
 namespace unimap::map {
 
 Submap::Submap(int id, const Eigen::Vector3d& origin_local, const DistanceMapOptions& options)
-    : id_(id), T_local_submap_(Eigen::Translation3d(origin_local)), map_(std::make_unique<DistanceMap>(options)) {}
+    : id_(id), T_local_submap_(Eigen::Translation3d(origin_local)), map_(std::make_unique<SurfaceDistanceMap>(options)) {}
 
 void Submap::Insert(std::vector<Eigen::Vector3f> points_local, const Eigen::Vector3f& sensor_origin_local) {
   assert(map_ && "Submap::Insert after Retire");
@@ -27,6 +27,7 @@ RetiredSubmap Submap::Retire() {
   }
   const Eigen::Vector3f origin = T_local_submap_.translation().cast<float>();
   retired.points_submap = map_->OccupiedVoxelCentres();
+  retired.update_times = map_->UpdateTimes();
   for (Eigen::Vector3f& p : retired.points_submap) p -= origin;
   map_.reset();
   return retired;

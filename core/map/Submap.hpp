@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "map/DistanceMap.hpp"
+#include "map/SurfaceDistanceMap.hpp"
 #include "map/DistanceMapOptions.hpp"
 
 namespace unimap::map {
@@ -16,6 +16,7 @@ struct RetiredSubmap {
   Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();  // frame at creation (local odometry frame)
   std::vector<Eigen::Vector3f> points_submap;                  // occupied voxel centres, submap frame
   int scans_3d = 0;                                            // 3D scans it received
+  MapUpdateTimes update_times;                                 // its map's update times, summed
 };
 
 // One submap (DESIGN.md 1.4): an occupancy octree with its incremental
@@ -31,8 +32,8 @@ class Submap {
   int id() const { return id_; }
   const Eigen::Isometry3d& T_local_submap() const { return T_local_submap_; }
   int scans_3d() const { return scans_3d_; }
-  DistanceMap& distance_map() { return *map_; }
-  const DistanceMap& distance_map() const { return *map_; }
+  SurfaceDistanceMap& distance_map() { return *map_; }
+  const SurfaceDistanceMap& distance_map() const { return *map_; }
 
   // Queues a 3D scan (local frame) into the distance map and counts it.
   // Throws InputError as DistanceMap::InsertScan.
@@ -45,7 +46,7 @@ class Submap {
   int id_;
   Eigen::Isometry3d T_local_submap_;
   int scans_3d_ = 0;
-  std::unique_ptr<DistanceMap> map_;
+  std::unique_ptr<SurfaceDistanceMap> map_;
 };
 
 }  // namespace unimap::map

@@ -48,6 +48,7 @@ void SubmapManager::InsertScan(std::vector<Eigen::Vector3f> points_local,
   const int half = options_.scans_3d_per_submap / 2;
   if (live_.front()->scans_3d() >= options_.scans_3d_per_submap) {
     retired_.push_back(live_.front()->Retire());
+    retired_times_ += retired_.back().update_times;
     live_.pop_front();
     // The growing submap becomes the matching one: its distance transform
     // starts now (built over its box in one go).
@@ -72,6 +73,13 @@ void SubmapManager::UpdateSensorPosition(const Eigen::Vector3f& sensor_local) {
 void SubmapManager::WaitForUpdates() {
   std::lock_guard<std::mutex> lock(mutex_);
   for (auto& submap : live_) submap->distance_map().WaitForUpdates();
+}
+
+MapUpdateTimes SubmapManager::UpdateTimes() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  MapUpdateTimes times = retired_times_;
+  for (const auto& submap : live_) times += submap->distance_map().UpdateTimes();
+  return times;
 }
 
 SubmapInsertion SubmapManager::last_insertion() const {

@@ -40,6 +40,8 @@ class SubmapManager : public ScanMap {
   void InsertScan(std::vector<Eigen::Vector3f> points_local, const Eigen::Vector3f& sensor_origin_local) override;
   void UpdateSensorPosition(const Eigen::Vector3f& sensor_local) override;
   void WaitForUpdates() override;
+  // Summed over every submap so far (live and retired).
+  MapUpdateTimes UpdateTimes() const override;
 
   // Where the last InsertScan went.
   SubmapInsertion last_insertion() const;
@@ -57,6 +59,7 @@ class SubmapManager : public ScanMap {
   SubmapInsertion last_;
   int next_id_ = 0;
   std::shared_ptr<const DistanceField> empty_;
+  MapUpdateTimes retired_times_;  // of the submaps retired so far
 };
 
 }  // namespace unimap::map

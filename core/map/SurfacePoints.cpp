@@ -156,6 +156,12 @@ const SurfacePoints::Element* SurfacePoints::Find(std::uint64_t key) const {
   return &it->second.element;
 }
 
+void SurfacePoints::ForEach(const std::function<void(std::uint64_t, const Element&)>& visit) const {
+  for (const auto& [key, entry] : entries_) {
+    if (entry.has_element) visit(key, entry.element);
+  }
+}
+
 std::size_t SurfacePoints::MemoryBytes() const {
   // Node (entry, key, next pointer) plus one bucket pointer per entry.
   return entries_.size() * (sizeof(Entry) + sizeof(std::uint64_t) + 2 * sizeof(void*)) +

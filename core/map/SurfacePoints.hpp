@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 
 #include <Eigen/Core>
@@ -68,7 +69,8 @@ class SurfacePoints {
   // Forgets key (its voxel became free).
   void Erase(std::uint64_t key);
   // The element of key (as of its last Refresh), or null when the voxel has
-  // none (no return, or not refreshed since its first).
+  // none (no return, or not refreshed since its first). The pointer stays
+  // valid, following the element's later refreshes, until key is erased.
   const Element* Find(std::uint64_t key) const;
 
   // Distance from p_map to the element, negative directly behind an
@@ -86,6 +88,9 @@ class SurfacePoints {
     const float outside = std::sqrt(lateral_sq) - patch_radius_m_;
     return std::sqrt(height * height + outside * outside);
   }
+
+  // Calls visit(key, element) for every voxel with an element.
+  void ForEach(const std::function<void(std::uint64_t, const Element&)>& visit) const;
 
   std::size_t size() const { return entries_.size(); }
   // Approximate heap memory of the table (bytes).

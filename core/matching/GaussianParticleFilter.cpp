@@ -1,6 +1,7 @@
 #include "matching/GaussianParticleFilter.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -73,6 +74,7 @@ std::vector<PlanePoint> TieToPlanes(const Eigen::Isometry3d& T_map_body_predicte
 
 struct GaussianParticleFilter::Workspace {
   std::vector<Vector6d> particles;
+  std::vector<Eigen::Isometry3d> poses;  // the particles applied to the prediction
   std::vector<double> log_weights;
   std::unique_ptr<tbb::task_arena> arena;
 };
@@ -91,8 +93,11 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
                                         const std::vector<Eigen::Vector3f>& points_body,
                                         const DistanceQuery& field, double max_predicted_distance_m) {
   GpfResult result;
+  const auto downsample_start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector3f> points =
       VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
+  result.downsample_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - downsample_start).count();
   ++scans_matched_;
   result.points_used = static_cast<int>(points.size());
   std::vector<PlanePoint> plane_points;
@@ -145,16 +150,13 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
 
   // Weight every particle by the scan likelihood (independent, so parallel and deterministic).
   const ScanLikelihood likelihood(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points);
+  ws.poses.resize(static_cast<std::size_t>(K));
+  for (std::size_t i = 0; i < ws.poses.size(); ++i) {
+    ws.poses[i] = estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]);
+  }
   const auto weigh = [&](const tbb::blocked_range<int>& range) {
-    std::vector<Eigen::Vector3f> scratch_points;
-    std::vector<float> scratch_distances;
-    for (int k = range.begin(); k != range.end(); ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      const Eigen::Isometry3d T_particle = estimation::ApplyPoseError(T_map_body_predicted, ws.particles[i]);
-      ws.log_weights[i] =
-          likelihood.LogLikelihood(field, T_particle, points, plane_points, &scratch_points, &scratch_distances,
-                                   unmeasured);
-    }
+    likelihood.LogLikelihoods(field, ws.poses, range.begin(), range.end(), points, plane_points, unmeasured,
+                              ws.log_weights.data());
   };
   if (ws.arena) {
     ws.arena->execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, K, 16), weigh); });

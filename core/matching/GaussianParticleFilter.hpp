@@ -26,6 +26,7 @@ struct GpfResult {
   int points_unseen = 0;                  // of those: beyond max_predicted_distance_m, not measured
   int refine_iterations = 0;              // accepted Gauss-Newton steps (GpfOptions::refine_iterations)
   bool refined = false;                   // posterior_* are the refined Laplace posterior
+  double downsample_s = 0.0;              // wall time of the scan's voxel filter (part of Match)
 };
 
 // Gaussian particle filter scan matcher (Bry et al. 2012): samples pose

@@ -33,6 +33,14 @@ class ScanLikelihood {
                        std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances,
                        int unmeasured_points = 0) const;
 
+  // The same for every pose of poses[first, last), written to
+  // log_likelihoods[first, last). Point by point across the poses: the
+  // poses are near each other (particles), so the lookups of one point hit
+  // the same few field blocks.
+  void LogLikelihoods(const DistanceQuery& field, const std::vector<Eigen::Isometry3d>& poses, int first, int last,
+                      const std::vector<Eigen::Vector3f>& points_body, const std::vector<PlanePoint>& plane_points,
+                      int unmeasured_points, double* log_likelihoods) const;
+
  private:
   float inv_two_sigma_sq_;
   float clamp_m_;

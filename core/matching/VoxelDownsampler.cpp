@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace unimap::matching {
@@ -38,6 +39,27 @@ std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>&
     kept.resize(static_cast<std::size_t>(max_points));
   }
   return kept;
+}
+
+std::vector<Eigen::Vector3f> VoxelCentroids(const std::vector<Eigen::Vector3f>& points, double voxel_m) {
+  if (!(voxel_m > 0.0)) return points;
+  const double inv_voxel = 1.0 / voxel_m;
+  std::unordered_map<std::uint64_t, std::size_t> index;  // voxel -> its slot
+  index.reserve(points.size());
+  std::vector<Eigen::Vector3d> sums;
+  std::vector<int> counts;
+  for (const auto& p : points) {
+    const auto [it, fresh] = index.try_emplace(VoxelKey(p, inv_voxel), sums.size());
+    if (fresh) {
+      sums.emplace_back(Eigen::Vector3d::Zero());
+      counts.push_back(0);
+    }
+    sums[it->second] += p.cast<double>();
+    ++counts[it->second];
+  }
+  std::vector<Eigen::Vector3f> centroids(sums.size());
+  for (std::size_t i = 0; i < sums.size(); ++i) centroids[i] = (sums[i] / counts[i]).cast<float>();
+  return centroids;
 }
 
 }  // namespace unimap::matching

@@ -21,4 +21,8 @@ inline std::uint64_t VoxelCellKey(const Eigen::Vector3i& cell) {
 std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
                                              int max_points, std::uint64_t seed);
 
+// One point per voxel: the mean of the points in it, in the order the
+// voxels are first seen (deterministic).
+std::vector<Eigen::Vector3f> VoxelCentroids(const std::vector<Eigen::Vector3f>& points, double voxel_m);
+
 }  // namespace unimap::matching

@@ -78,14 +78,17 @@ void Localizer::AddImu(const ImuSample& sample) {
     return;
   }
   last_imu_time_s_ = sample.time_s;
-  if (!eskf_.initialized()) {
-    init_imu_.push_back(sample);
-    TryInitialize();
-  } else if (!eskf_.Propagate(sample)) {
-    ++stats_.imu_gaps;
-    eskf_.RestartImu(sample);
+  {
+    StageTimer timer(&stats_.times.eskf_s);
+    if (!eskf_.initialized()) {
+      init_imu_.push_back(sample);
+      TryInitialize();
+    } else if (!eskf_.Propagate(sample)) {
+      ++stats_.imu_gaps;
+      eskf_.RestartImu(sample);
+    }
+    if (eskf_.initialized()) history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
-  if (eskf_.initialized()) history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   ProcessReadyScans(false);
 }
 
@@ -134,6 +137,7 @@ void Localizer::InitializeWithoutImu(double time_s) {
 }
 
 void Localizer::PredictTo(double t_end) {
+  StageTimer timer(&stats_.times.eskf_s);
   if (!prior_) {
     eskf_.PropagateTo(t_end);
     return;
@@ -149,6 +153,15 @@ void Localizer::PredictTo(double t_end) {
     prediction.covariance = estimation::UnmodelledMotionCovariance(options_.motion, t_end - eskf_.state().time_s);
   }
   eskf_.PredictPose(t_end, prediction.T_prev_next, prediction.covariance);
+}
+
+StageTimes Localizer::Times() const {
+  StageTimes times = stats_.times;
+  const map::MapUpdateTimes map = map_->UpdateTimes();
+  times.map_surface_s = map.surface_s;
+  times.map_distance_s = map.distance_s;
+  times.map_export_s = map.export_s;
+  return times;
 }
 
 std::vector<ScanPose> Localizer::TakePoses() {
@@ -207,6 +220,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   RawScan raw;
   if (const auto* line = std::get_if<LineScan>(&scan)) {
     try {
+      StageTimer timer(&stats_.times.deskew_s);
       LineScanConversion converted = LineScanToRawScan(*line);
       stats_.beams_dropped += converted.dropped;
       raw = std::move(converted.scan);
@@ -227,6 +241,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   }
   BodyScan body;
   try {
+    StageTimer timer(&stats_.times.deskew_s);
     body = plugin_->Deskew(raw, encoder_, [this](double t) { return history_.At(t); });
   } catch (const InputError& e) {
     Skip(&stats_.scans_bad_input, "scan at " + std::to_string(t_end) + " s: " + e.what());
@@ -251,14 +266,21 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const bool is_line = std::holds_alternative<LineScan>(scan);
-    const matching::GpfResult match =
-        gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
-                   FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes),
-                   is_line ? options_.line_max_predicted_distance_m : 0.0);
+    double match_s = 0.0;
+    matching::GpfResult match;
+    {
+      StageTimer timer(&match_s);
+      match = gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
+                         FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes),
+                         is_line ? options_.line_max_predicted_distance_m : 0.0);
+    }
+    stats_.times.match_s += match_s - match.downsample_s;
+    stats_.times.downsample_s += match.downsample_s;
     diagnostics.points_used = match.points_used;
     diagnostics.points_unseen = match.points_unseen;
     diagnostics.effective_sample_size = match.effective_sample_size;
     if (match.ok) {
+      StageTimer timer(&stats_.times.eskf_s);
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       diagnostics.measured_sd = match.measurement.R.diagonal().cwiseSqrt();
       diagnostics.mahalanobis_sq = update.mahalanobis_sq;
@@ -305,12 +327,16 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     Eigen::Vector3f origin;
     // One point per map voxel: the octree update costs per point, occupancy
     // barely changes.
-    std::vector<Eigen::Vector3f> scan3d =
-        matching::VoxelDownsample(accumulator_.Take(&origin, &filled), options_.map.resolution_m, 0, 0);
+    std::vector<Eigen::Vector3f> scan3d;
+    {
+      StageTimer timer(&stats_.times.downsample_s);
+      scan3d = matching::VoxelDownsample(accumulator_.Take(&origin, &filled), options_.map.resolution_m, 0, 0);
+    }
     try {
       KeyScan key;
       if (on_key_scan_) key = {t_ref, T_map_body, scan3d, origin};
       if (!filled.empty()) {
+        StageTimer timer(&stats_.times.downsample_s);
         scan3d.insert(scan3d.end(), filled.begin(), filled.end());
         scan3d = matching::VoxelDownsample(scan3d, options_.map.resolution_m, 0, 0);
       }

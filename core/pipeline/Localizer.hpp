@@ -20,6 +20,7 @@
 #include "pipeline/LocalizerOptions.hpp"
 #include "pipeline/PoseHistory.hpp"
 #include "pipeline/ScanAccumulator.hpp"
+#include "pipeline/StageTimes.hpp"
 #include "unimap/EncoderTrack.hpp"
 #include "unimap/PayloadPlugin.hpp"
 
@@ -55,6 +56,7 @@ struct LocalizerStats {
   std::size_t map_errors = 0;         // map updates refused (pose outside the map's range): skipped
   std::optional<estimation::InitialAttitude> initial_attitude;  // used for a given initial pose
   std::vector<std::string> messages;  // the first few skip reasons, for the log
+  StageTimes times;                   // the localiser's stages (map stages: the map's UpdateTimes)
 };
 
 // Odometry-mode localiser (DESIGN.md 1.1-1.3): IMU -> ESKF prediction; each
@@ -87,6 +89,8 @@ class Localizer : public EventSink {
   std::vector<ScanPose> TakePoses() override;
   std::size_t ScansReceived() const override { return stats_.scans; }
   const LocalizerStats& stats() const { return stats_; }
+  // The localiser's stage times with its map's update times.
+  StageTimes Times() const;
   bool initialized() const { return eskf_.initialized(); }
 
  private:

@@ -92,6 +92,10 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // propagation around every new surface and memory (1.0 m before; speed,
   // memory and accuracy of both in docs/mapping.md, "Distance map clamp").
   o.ClampFieldAtLikelihood();
+  // Every match is refined by Gauss-Newton, so the particles only place its
+  // start: 100 do that as well as 500 at a fifth of the time (docs/mapping.md,
+  // "Particles").
+  o.gpf.num_particles = 100;
   return o;
 }
 
@@ -135,6 +139,8 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // (rotation RMSE fixed VLP-16 0.120 -> 0.230 deg, rotating Hokuyo 0.216
   // -> 0.343 deg, rotating VLP-16 0.159 -> 0.150 deg).
   o.gpf.refine_iterations = 0;
+  // Without refinement the particles are the estimate: all of them.
+  o.gpf.num_particles = matching::GpfOptions{}.num_particles;
   // Point to plane (GpfOptions::point_to_plane, `unimap localize
   // --point-to-plane`) stays off: in the true tunnel map it cut the 60 s
   // position / rotation RMSE (fixed VLP-16 0.020 / 0.078 -> 0.016 / 0.064,

@@ -77,6 +77,7 @@ void Mapper::OnKeyScan(KeyScan&& key) {
   for (map::RetiredSubmap& retired : submaps_->TakeRetired()) finder_.AddRetired(std::move(retired), path_m_);
 
   if (options_.loop_search.enabled && k % options_.loop_search.every_3d_scans == 0) {
+    StageTimer timer(&stats_.loop_search_s);
     const Eigen::Isometry3d T_world_body = graph_.T_world_local() * key.T_local_body;
     for (const LoopClosure& closure : finder_.Search(k, points_body, T_world_body, path_m_, graph_)) {
       graph_.AddLoopClosure(closure);
@@ -126,6 +127,13 @@ std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
     for (const Eigen::Vector3f& p : key_points_body_[k]) points.push_back(T_world_body * p);
   }
   return matching::VoxelDownsample(points, voxel_m, 0, 0);
+}
+
+StageTimes Mapper::Times() const {
+  StageTimes times = localizer_->Times();
+  times.loop_search_s = stats_.loop_search_s;
+  times.optimisation_s = stats_.optimisation_s;
+  return times;
 }
 
 MapperStats Mapper::stats() const {

@@ -26,6 +26,7 @@ struct MapperStats {
   std::size_t optimisations = 0;      // pose-graph optimisations finished and applied
   std::size_t optimisation_failures = 0;  // optimisations that reported !ok (result ignored)
   double optimisation_s = 0.0;        // total solver time
+  double loop_search_s = 0.0;         // total time searching and matching loop closures
   double first_loop_closure_time_s = -1.0;  // time of the 3D scan of the first accepted closure (-1: none)
   LoopSearchStats loop_search;        // candidate counts
   std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
@@ -61,6 +62,8 @@ class Mapper : public EventSink {
   std::vector<Eigen::Vector3f> MapPoints(double voxel_m) const;
   const Eigen::Isometry3d& T_world_local() const { return graph_.T_world_local(); }
   const LocalizerStats& localizer_stats() const { return localizer_->stats(); }
+  // Where the time went: the localiser's and its map's stages, loop search, optimisation.
+  StageTimes Times() const;
   MapperStats stats() const;
 
  private:

@@ -46,7 +46,12 @@ int RunMappingToFolder(const MappingRunOptions& options) {
                         options.trace);
     MapOutputOptions map_options;
     map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
-    const JsonObject mapping = WriteMapOutputs(out, mapper, map_options);
+    pipeline::StageTimes stages = mapper.Times();
+    JsonObject mapping;
+    {
+      pipeline::StageTimer timer(&stages.outputs_s);
+      mapping = WriteMapOutputs(out, mapper, map_options);
+    }
 
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
@@ -56,6 +61,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     outputs.motion = motion.name;
     outputs.motion_reason = motion.reason;
     outputs.extras.emplace_back("mapping", mapping);
+    outputs.extras.emplace_back("stages", StageTimesJson(stages, summary.processing_s, !options.quiet));
     const pipeline::MapperStats stats = mapper.stats();
     if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {
       const std::filesystem::path truth = std::filesystem::path(options.data_dir) / "groundtruth.tum";

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <limits>
 
@@ -92,6 +93,26 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   o.Add("map_insertions", s.map_insertions);
   o.Add("map_errors", s.map_errors);
   o.Add("messages", s.messages);
+  return o;
+}
+
+JsonObject StageTimesJson(const pipeline::StageTimes& t, double processing_s, bool print) {
+  const std::pair<const char*, double> stages[] = {
+      {"deskew_s", t.deskew_s},           {"downsample_s", t.downsample_s},
+      {"match_s", t.match_s},             {"eskf_s", t.eskf_s},
+      {"map_surface_s", t.map_surface_s}, {"map_distance_s", t.map_distance_s},
+      {"map_export_s", t.map_export_s},   {"loop_search_s", t.loop_search_s},
+      {"optimisation_s", t.optimisation_s}, {"outputs_s", t.outputs_s}};
+  JsonObject o;
+  std::string line = "stages (s):";
+  for (const auto& [key, seconds] : stages) {
+    o.Add(key, seconds);
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), " %.*s %.2f", static_cast<int>(std::strlen(key) - 2), key, seconds);
+    line += buffer;
+  }
+  o.Add("processing_s", processing_s);
+  if (print) std::cout << line << '\n';
   return o;
 }
 

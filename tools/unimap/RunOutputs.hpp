@@ -55,6 +55,9 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
 
 // The localiser's counts as run.json's "localizer" object.
 JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& stats);
+// Stage times as run.json's "stages" object (seconds, and each stage's share
+// of processing_s), printed as one line when print is set.
+JsonObject StageTimesJson(const pipeline::StageTimes& times, double processing_s, bool print);
 
 // The progress line on stderr: scans, scans/s, real-time factor, ETA.
 void PrintRunProgress(const pipeline::RunProgress& progress);

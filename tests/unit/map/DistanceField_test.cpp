@@ -50,7 +50,10 @@ TEST(DistanceField, LookupReturnsTheValueOfTheVoxelContainingThePoint) {
   }
   EXPECT_EQ(field.sequence(), 7u);
   EXPECT_EQ(field.CellCount(), 60u);
-  EXPECT_EQ(field.MemoryBytes(), 120u);
+  // One block of codes and the block table's one entry.
+  EXPECT_EQ(field.StoredBlocks(), 1u);
+  EXPECT_EQ(field.MemoryBytes(), DistanceField::kBlockCells * sizeof(std::uint16_t) +
+                                     sizeof(std::shared_ptr<const DistanceField::Block>));
   EXPECT_TRUE(field.box_max().isApprox(V3(0.5f, 2.0f, 4.5f)));
 }
 
@@ -188,7 +191,9 @@ TEST(DistanceField, PlanesGiveTheSignedHeightAboveTheCellsPlane) {
   planes.Set(0, V3::UnitZ(), 0.1f);
   field.SetPlanes(std::move(planes));
   EXPECT_TRUE(field.HasPlanes());
-  EXPECT_EQ(field.MemoryBytes(), field.CellCount() * (sizeof(std::uint16_t) + sizeof(std::uint32_t)));
+  EXPECT_EQ(field.MemoryBytes(), DistanceField::kBlockCells * sizeof(std::uint16_t) +
+                                     sizeof(std::shared_ptr<const DistanceField::Block>) +
+                                     field.CellCount() * sizeof(std::uint32_t));
   const V3 p(-0.6f, 0.1f, 2.4f);  // same cell
   ASSERT_TRUE(field.PlaneAt(p, &normal, &offset));
   EXPECT_LT((normal - V3::UnitZ()).norm(), 1e-6f);
@@ -196,6 +201,58 @@ TEST(DistanceField, PlanesGiveTheSignedHeightAboveTheCellsPlane) {
   EXPECT_FALSE(field.PlaneAt(V3(-0.2f, 0.3f, 2.2f), &normal, &offset));  // cell (1, 0, 0): none
   EXPECT_FALSE(field.PlaneAt(V3(-1.2f, 0.3f, 2.2f), &normal, &offset));  // outside the box
   EXPECT_THROW(field.SetPlanes(CellPlanes(7)), InputError);
+}
+
+// A field of 2 x 2 x 2 blocks of 0.1 m cells from the origin where only
+// blocks (0, 0, 0) and (1, 1, 1) are stored: f(p) = 0.01 + 0.02 |p| there.
+DistanceField TwoBlockField() {
+  constexpr int kEdge = DistanceField::kBlockEdge;
+  std::vector<std::shared_ptr<const DistanceField::Block>> blocks(8);
+  for (const int b : {0, 7}) {
+    auto block = std::make_shared<DistanceField::Block>(DistanceField::kBlockCells);
+    const Eigen::Vector3i first = Eigen::Vector3i(b >> 2, (b >> 1) & 1, b & 1) * kEdge;
+    for (int x = 0; x < kEdge; ++x) {
+      for (int y = 0; y < kEdge; ++y) {
+        for (int z = 0; z < kEdge; ++z) {
+          const V3 centre = ((first + Eigen::Vector3i(x, y, z)).cast<float>().array() + 0.5f).matrix() * 0.1f;
+          (*block)[DistanceField::BlockOffset(x, y, z)] = DistanceField::Quantise(0.01f + 0.02f * centre.norm(), 0.5f);
+        }
+      }
+    }
+    blocks[static_cast<std::size_t>(b)] = std::move(block);
+  }
+  return DistanceField(V3::Zero(), Eigen::Vector3i(2, 2, 2), 0.1f, 0.5f, std::move(blocks), 3);
+}
+
+TEST(DistanceField, BlocksNotStoredReadTheClamp) {
+  const DistanceField field = TwoBlockField();
+  EXPECT_EQ(field.dims(), Eigen::Vector3i(16, 16, 16));
+  EXPECT_EQ(field.StoredBlocks(), 2u);
+  const float step = 0.5f / 65535.0f;
+  const V3 in_first(0.35f, 0.25f, 0.45f);    // cell (3, 2, 4) of block (0, 0, 0)
+  const V3 in_last(1.25f, 0.95f, 1.55f);     // cell (12, 9, 15) of block (1, 1, 1)
+  const V3 in_missing(1.25f, 0.25f, 0.45f);  // block (1, 0, 0)
+  EXPECT_NEAR(field.Distance(in_first), 0.01f + 0.02f * in_first.norm(), step);
+  EXPECT_NEAR(field.Distance(in_last), 0.01f + 0.02f * in_last.norm(), step);
+  EXPECT_EQ(field.Distance(in_missing), 0.5f);
+  EXPECT_EQ(field.CellDistance(Eigen::Vector3i(12, 2, 4)), 0.5f);
+  V3 gradient = V3::Ones();
+  EXPECT_EQ(field.DistanceTrilinear(in_missing, &gradient), 0.5f);
+  EXPECT_TRUE(gradient.isZero());
+}
+
+TEST(DistanceField, TrilinearAcrossABlockBoundaryUsesBothBlocks) {
+  const DistanceField field = TwoBlockField();
+  // Between the centres x = 0.75 (block 0) and 0.85 (block 1, missing): a
+  // quarter of the way, the missing side counts as the clamp.
+  const V3 p(0.775f, 0.25f, 0.45f);
+  const float inside = field.CellDistance(Eigen::Vector3i(7, 2, 4));
+  V3 gradient;
+  EXPECT_NEAR(field.DistanceTrilinear(p, &gradient), 0.75f * inside + 0.25f * 0.5f, 1e-5f);
+  EXPECT_NEAR(gradient.x(), (0.5f - inside) / 0.1f, 1e-3f);
+  // Inside one block the interpolation of the stored values is as before.
+  const V3 q(0.3f, 0.3f, 0.3f);
+  EXPECT_NEAR(field.DistanceTrilinear(q, nullptr), 0.01f + 0.02f * q.norm(), 2e-4f);
 }
 
 TEST(DistanceField, InconsistentConstructionIsAnInputError) {
@@ -206,6 +263,12 @@ TEST(DistanceField, InconsistentConstructionIsAnInputError) {
   EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, -1.0f, std::vector<std::uint16_t>(60), 0),
                InputError);
   EXPECT_THROW(DistanceField(std::numeric_limits<float>::infinity()), InputError);
+  EXPECT_THROW(DistanceField(V3::Zero(), Eigen::Vector3i(2, 1, 1), 0.1f, 0.5f,
+                             std::vector<std::shared_ptr<const DistanceField::Block>>(1), 0),
+               InputError);
+  std::vector<std::shared_ptr<const DistanceField::Block>> short_block{
+      std::make_shared<DistanceField::Block>(10)};
+  EXPECT_THROW(DistanceField(V3::Zero(), Eigen::Vector3i(1, 1, 1), 0.1f, 0.5f, short_block, 0), InputError);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "MapTestSupport.hpp"
+#include "map/DistanceMap.hpp"
 #include "unimap/Errors.hpp"
 
 namespace unimap::map {

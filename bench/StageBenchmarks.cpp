@@ -1,0 +1,170 @@
+// Stage micro-benchmarks on fixed inputs (StageInputs): deskew, scan
+// downsampling, particle filter match, map update (surface elements,
+// distance waves, field export), and distance lookups. Each case runs on a
+// simulated scenario / payload pair; figures in docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "StageInputs.hpp"
+#include "map/SurfaceDistanceLayer.hpp"
+#include "matching/GaussianParticleFilter.hpp"
+#include "matching/VoxelDownsampler.hpp"
+#include "pipeline/FieldDistanceQuery.hpp"
+
+namespace unimap::bench {
+namespace {
+
+struct Case {
+  const char* scenario;
+  const char* platform;
+  double duration_s;
+};
+
+// One pair per payload, at the scenario it was made for (10 s each).
+constexpr Case kCases[] = {
+    {"corridor_loop", "fixed_vlp16", 10.0},
+    {"patio", "rotating_vlp16", 10.0},
+    {"narrow_hallway", "rotating_hokuyo", 10.0},
+};
+
+const StageInputs& CaseInputs(const benchmark::State& state) {
+  const Case& c = kCases[state.range(0)];
+  return Inputs(c.scenario, c.platform, c.duration_s);
+}
+
+// The map after every key scan of the inputs.
+std::unique_ptr<map::SurfaceDistanceLayer> FullMap(const StageInputs& in) {
+  auto layer = std::make_unique<map::SurfaceDistanceLayer>(in.options.map);
+  for (const KeyScanInput& key : in.key_scans) layer->Insert(key.points_map, key.sensor_map);
+  return layer;
+}
+
+void BM_Deskew(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  const PayloadPlugin& plugin = *in.platform.plugin.plugin;
+  const MotionQuery truth = [&in](double t) { return in.truth.At(t); };
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(plugin.Deskew(in.raw_scans[i], in.encoder, truth));
+    i = (i + 1) % in.raw_scans.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_ScanDownsample(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  const matching::GpfOptions& gpf = in.options.gpf;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(matching::VoxelDownsample(in.body_scans[i], gpf.voxel_size_m, gpf.max_points, i));
+    i = (i + 1) % in.body_scans.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// Every key scan into a fresh map, with a field export after each (as the
+// odometry map does); items are key scans.
+void BM_MapUpdate(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  map::SurfaceDistanceCounts counts;
+  for (auto _ : state) {
+    map::SurfaceDistanceLayer layer(in.options.map);
+    std::uint64_t sequence = 0;
+    for (const KeyScanInput& key : in.key_scans) {
+      layer.Insert(key.points_map, key.sensor_map);
+      benchmark::DoNotOptimize(layer.Export(key.sensor_map, in.options.map.max_range_m, ++sequence));
+    }
+    counts = layer.counts();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.key_scans.size()));
+  const double keys = static_cast<double>(in.key_scans.size());
+  state.counters["points/key"] = static_cast<double>(counts.points_added) / keys;
+  state.counters["waves/key"] = static_cast<double>(counts.waves) / keys;
+  state.counters["cells/key"] = static_cast<double>(counts.cells_claimed) / keys;
+  state.counters["blocks/key"] = static_cast<double>(counts.blocks_computed) / keys;
+  state.counters["elements"] = static_cast<double>(counts.elements);
+  state.counters["cleared/key"] = static_cast<double>(counts.voxels_cleared) / keys;
+  state.counters["surface_ms"] = 1e3 * (counts.surface_s - counts.carve_s);
+  state.counters["carve_ms"] = 1e3 * counts.carve_s;
+  state.counters["distance_ms"] = 1e3 * counts.distance_s;
+  state.counters["export_ms"] = 1e3 * counts.export_s;
+}
+
+// A growing submap becoming the matching one: every element propagated at once.
+void BM_MapEnableDistances(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  for (auto _ : state) {
+    state.PauseTiming();
+    map::DistanceMapOptions growing = in.options.map;
+    growing.compute_distances = false;
+    map::SurfaceDistanceLayer layer(growing);
+    for (const KeyScanInput& key : in.key_scans) layer.Insert(key.points_map, key.sensor_map);
+    state.ResumeTiming();
+    layer.EnableDistances();
+    benchmark::DoNotOptimize(layer.Export(in.key_scans.back().sensor_map, in.options.map.max_range_m, 1));
+  }
+}
+
+// The particle filter (with its refinement) matching each scan at its true
+// pose in the map of all key scans; items are scans.
+void BM_Match(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  const auto layer = FullMap(in);
+  const auto field = layer->Export(in.key_scans.back().sensor_map, 0.0, 1);
+  const pipeline::FieldDistanceQuery query(field, in.options.trilinear_distance);
+  matching::GaussianParticleFilter gpf(in.options.gpf);
+  matching::Matrix6d covariance = matching::Matrix6d::Zero();
+  covariance.diagonal() << 4e-4, 4e-4, 4e-4, 4e-6, 4e-6, 4e-6;  // 2 cm, 0.11 deg
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gpf.Match(in.body_poses[i], covariance, in.body_scans[i], query,
+                                       in.options.line_max_predicted_distance_m));
+    i = (i + 1) % in.body_scans.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// Trilinear lookups with gradients at points near the surfaces.
+void BM_TrilinearLookup(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  const auto field = FullMap(in)->Export(in.key_scans.back().sensor_map, 0.0, 1);
+  std::vector<Eigen::Vector3f> probes;
+  std::mt19937 rng(7);
+  std::normal_distribution<float> offset(0.0f, 0.1f);
+  for (const Eigen::Vector3f& p : in.key_scans.front().points_map) {
+    probes.push_back(p + Eigen::Vector3f(offset(rng), offset(rng), offset(rng)));
+  }
+  std::size_t i = 0;
+  Eigen::Vector3f gradient;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(field->DistanceTrilinear(probes[i], &gradient));
+    i = (i + 1) % probes.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void AllCases(benchmark::internal::Benchmark* b) {
+  for (int i = 0; i < static_cast<int>(sizeof(kCases) / sizeof(kCases[0])); ++i) b->Arg(i);
+}
+
+BENCHMARK(BM_Deskew)->Apply(AllCases);
+BENCHMARK(BM_ScanDownsample)->Apply(AllCases);
+BENCHMARK(BM_MapUpdate)->Apply(AllCases)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MapEnableDistances)->Apply(AllCases)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Match)->Apply(AllCases)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TrilinearLookup)->Apply(AllCases);
+
+}  // namespace
+}  // namespace unimap::bench
+
+BENCHMARK_MAIN();

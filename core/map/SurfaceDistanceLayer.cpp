@@ -1,0 +1,450 @@
+#include "map/SurfaceDistanceLayer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+
+namespace unimap::map {
+namespace {
+
+constexpr int kKeyOffset = 32768;  // voxel key of coordinate 0
+constexpr int kMaxKey = 65535;
+constexpr int kEdge = DistanceField::kBlockEdge;
+constexpr int kMask = kEdge - 1;
+constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();  // no occupied voxel within reach
+
+const std::array<Eigen::Vector3i, 6> kSteps = {Eigen::Vector3i(1, 0, 0),  Eigen::Vector3i(-1, 0, 0),
+                                               Eigen::Vector3i(0, 1, 0),  Eigen::Vector3i(0, -1, 0),
+                                               Eigen::Vector3i(0, 0, 1),  Eigen::Vector3i(0, 0, -1)};
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+float LogOdds(double probability) { return static_cast<float>(std::log(probability / (1.0 - probability))); }
+
+Eigen::Vector3i BlockOf(const Eigen::Vector3i& key) {
+  return key.unaryExpr([](int v) { return v >> DistanceField::kBlockShift; });
+}
+
+Eigen::Vector3i Unpack(std::uint64_t packed) {
+  return Eigen::Vector3i(static_cast<int>((packed >> 32) & 0xffff), static_cast<int>((packed >> 16) & 0xffff),
+                         static_cast<int>(packed & 0xffff));
+}
+
+std::size_t CellOffset(const Eigen::Vector3i& key) {
+  return static_cast<std::size_t>(DistanceField::BlockOffset(key.x() & kMask, key.y() & kMask, key.z() & kMask));
+}
+
+bool InKeyRange(const Eigen::Vector3i& key) { return (key.array() >= 0).all() && (key.array() <= kMaxKey).all(); }
+
+// True when after differs from before enough to recompute the distances to
+// it (SurfaceDistanceLayer::kMoveTolerance).
+bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element& after, float resolution_m) {
+  if (before.planar != after.planar || before.oriented != after.oriented) return true;
+  float change_voxels = (before.mean_m - after.mean_m).norm() / resolution_m;
+  if (after.planar) change_voxels += SurfacePoints::kPatchRadius * before.normal.cross(after.normal).norm();
+  return change_voxels > SurfaceDistanceLayer::kMoveTolerance;
+}
+
+}  // namespace
+
+struct SurfaceDistanceLayer::WorkBlock {
+  Eigen::Vector3i key = Eigen::Vector3i::Zero();                       // block coordinates
+  std::array<std::uint16_t, DistanceField::kBlockCells> sq_distance;  // to the nearest occupied voxel centre (voxels^2)
+  std::array<Site*, DistanceField::kBlockCells> owner;                // that voxel
+  bool dirty = true;                                                   // to recompute at the next export
+  std::shared_ptr<const DistanceField::Block> exported;               // as of the last export (null: all clamp)
+};
+
+SurfaceDistanceLayer::SurfaceDistanceLayer(const DistanceMapOptions& options)
+    : options_(options),
+      clamp_m_(static_cast<float>(options.clamp_distance_m)),
+      reach_(static_cast<int>(std::ceil(options.clamp_distance_m / options.resolution_m)) + 1),
+      log_odds_hit_(LogOdds(options.prob_hit)),
+      log_odds_miss_(LogOdds(options.prob_miss)),
+      log_odds_min_(LogOdds(options.clamp_min_probability)),
+      log_odds_max_(LogOdds(options.clamp_max_probability)),
+      distances_(options.compute_distances),
+      surfaces_(options.resolution_m, /*signed_distances=*/false) {}
+
+SurfaceDistanceLayer::~SurfaceDistanceLayer() = default;
+
+bool SurfaceDistanceLayer::KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* key) const {
+  const Eigen::Vector3d k = (p_map.cast<double>() / options_.resolution_m).array().floor() + kKeyOffset;
+  if (!((k.array() >= 0.0).all() && (k.array() <= kMaxKey).all())) return false;
+  *key = k.cast<int>();
+  return true;
+}
+
+Eigen::Vector3f SurfaceDistanceLayer::Centre(const Eigen::Vector3i& key) const {
+  return ((key.cast<double>().array() - kKeyOffset + 0.5) * options_.resolution_m).cast<float>().matrix();
+}
+
+SurfaceDistanceLayer::WorkBlock* SurfaceDistanceLayer::BlockAt(const Eigen::Vector3i& key, bool create) {
+  const Eigen::Vector3i block = BlockOf(key);
+  const std::uint64_t packed = SurfacePoints::Pack(block);
+  const auto it = blocks_.find(packed);
+  if (it != blocks_.end()) return it->second.get();
+  if (!create) return nullptr;
+  auto fresh = std::make_unique<WorkBlock>();
+  fresh->key = block;
+  fresh->sq_distance.fill(kFar);
+  fresh->owner.fill(nullptr);
+  block_min_ = block_min_.cwiseMin(block);
+  block_max_ = block_max_.cwiseMax(block);
+  return blocks_.emplace(packed, std::move(fresh)).first->second.get();
+}
+
+void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& sensor_map) {
+  const auto start = std::chrono::steady_clock::now();
+  ++scans_;
+  std::vector<std::uint64_t> touched;
+  touched.reserve(points_map.size());
+  for (const Eigen::Vector3f& p : points_map) {
+    Eigen::Vector3i key;
+    if (!p.allFinite() || !KeyOf(p, &key)) {
+      ++counts_.points_out_of_range;
+      continue;
+    }
+    const std::uint64_t packed = SurfacePoints::Pack(key);
+    surfaces_.Add(packed, Centre(key), p, &sensor_map);
+    touched.push_back(packed);
+    ++counts_.points_added;
+  }
+  std::sort(touched.begin(), touched.end());  // a deterministic order
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  // Hits: one per voxel and scan (as OctoMap counts a discretised scan).
+  std::vector<Site*> appeared;
+  for (const std::uint64_t packed : touched) {
+    const Eigen::Vector3i key = Unpack(packed);
+    surfaces_.Refresh(packed, Centre(key));
+    auto found = sites_.find(packed);
+    if (found == sites_.end()) {
+      site_store_.emplace_back();
+      found = sites_.emplace(packed, &site_store_.back()).first;
+    }
+    Site& site = *found->second;
+    site.key = key;
+    site.element = surfaces_.Find(packed);
+    site.log_odds = std::min(site.log_odds + log_odds_hit_, log_odds_max_);
+    site.missed_in = scans_;  // a hit wins over the scan's misses (as in OctoMap)
+    if (!site.occupied && site.log_odds > 0.0f) {
+      SetOccupied(&site, true);
+      appeared.push_back(&site);
+    }
+  }
+  std::vector<Site*> freed;
+  if (options_.raycast_free_space) {
+    const auto carve = std::chrono::steady_clock::now();
+    Carve(touched, sensor_map, &freed);
+    counts_.carve_s += SecondsSince(carve);
+  }
+  counts_.surface_s += SecondsSince(start);
+  if (!distances_) return;
+  const auto waves = std::chrono::steady_clock::now();
+  for (Site* site : freed) Refill(site);
+  for (Site* site : appeared) Wave(site);
+  for (const std::uint64_t packed : touched) {
+    Site& site = *sites_.at(packed);
+    if (site.waved) MarkIfChanged(&site, false);
+  }
+  counts_.distance_s += SecondsSince(waves);
+}
+
+void SurfaceDistanceLayer::SetOccupied(Site* site, bool occupied) {
+  if (site->occupied != occupied) occupied ? ++occupied_ : --occupied_;
+  site->occupied = occupied;
+  const std::size_t bit = CellOffset(site->key);
+  const std::uint64_t packed_block = SurfacePoints::Pack(BlockOf(site->key));
+  if (occupied) {
+    auto& mask = occupied_masks_[packed_block];  // zero-initialised when new
+    mask[bit / 64] |= std::uint64_t{1} << (bit % 64);
+    return;
+  }
+  const auto it = occupied_masks_.find(packed_block);
+  if (it == occupied_masks_.end()) return;
+  auto& mask = it.value();
+  mask[bit / 64] &= ~(std::uint64_t{1} << (bit % 64));
+  if (std::all_of(mask.begin(), mask.end(), [](std::uint64_t word) { return word == 0; })) {
+    occupied_masks_.erase(it);
+  }
+}
+
+void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
+                                 std::vector<Site*>* freed) {
+  // Rays in key units (voxel edges at integers): Amanatides & Woo's traversal
+  // from the sensor to the centre of each return's voxel, that voxel excluded.
+  const Eigen::Vector3d origin = sensor_map.cast<double>() / options_.resolution_m + Eigen::Vector3d::Constant(kKeyOffset);
+  const Eigen::Vector3i start = origin.array().floor().cast<int>();
+  for (const std::uint64_t packed : endpoints) {
+    const Eigen::Vector3i end = Unpack(packed);
+    const Eigen::Vector3d direction = end.cast<double>() + Eigen::Vector3d::Constant(0.5) - origin;
+    Eigen::Vector3i current = start;
+    Eigen::Vector3i step;
+    Eigen::Vector3d t_max, t_delta;
+    for (int a = 0; a < 3; ++a) {
+      step[a] = direction[a] > 0.0 ? 1 : -1;
+      if (direction[a] == 0.0) {
+        t_max[a] = t_delta[a] = std::numeric_limits<double>::infinity();
+      } else {
+        t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin[a]) / direction[a];
+        t_delta[a] = static_cast<double>(step[a]) / direction[a];
+      }
+    }
+    Eigen::Vector3i cached_block = Eigen::Vector3i::Constant(-1);
+    const std::array<std::uint64_t, DistanceField::kBlockCells / 64>* mask = nullptr;
+    double t = 0.0;  // ray parameter of the current voxel's entry
+    while (current != end) {
+      if (InKeyRange(current)) {
+        const Eigen::Vector3i block = BlockOf(current);
+        if (block != cached_block) {
+          cached_block = block;
+          const auto it = occupied_masks_.find(SurfacePoints::Pack(block));
+          mask = it == occupied_masks_.end() ? nullptr : &it->second;
+        }
+        if (mask == nullptr && (BlockOf(end) != block)) {
+          // Nothing occupied in this block: jump to where the ray leaves it.
+          double t_exit = std::numeric_limits<double>::infinity();
+          for (int a = 0; a < 3; ++a) {
+            if (direction[a] == 0.0) continue;
+            const double face = static_cast<double>(block[a] * kEdge + (step[a] > 0 ? kEdge : 0));
+            t_exit = std::min(t_exit, (face - origin[a]) / direction[a]);
+          }
+          if (t_exit >= 1.0) break;
+          t = std::max(t, t_exit);
+          const Eigen::Vector3d inside = origin + (t + 1e-9) * direction;
+          current = inside.array().floor().cast<int>();
+          for (int a = 0; a < 3; ++a) {
+            if (direction[a] != 0.0) {
+              t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin[a]) / direction[a];
+            }
+          }
+          continue;
+        }
+        const std::size_t bit = CellOffset(current);
+        if (mask != nullptr && ((*mask)[bit / 64] >> (bit % 64) & 1u) != 0) {
+          Site& site = *sites_.at(SurfacePoints::Pack(current));
+          if (site.missed_in != scans_) {
+            site.missed_in = scans_;
+            ++counts_.misses;
+            site.log_odds = std::max(site.log_odds + log_odds_miss_, log_odds_min_);
+            if (site.log_odds <= 0.0f) {
+              SetOccupied(&site, false);  // may invalidate mask: look the block up again
+              cached_block = Eigen::Vector3i::Constant(-1);
+              ++counts_.voxels_cleared;
+              freed->push_back(&site);
+            }
+          }
+        }
+      }
+      int axis = 0;
+      if (t_max[1] < t_max[axis]) axis = 1;
+      if (t_max[2] < t_max[axis]) axis = 2;
+      if (t_max[axis] > 1.0) break;  // past the return (rounding at its voxel's boundary)
+      t = t_max[axis];
+      current[axis] += step[axis];
+      t_max[axis] += t_delta[axis];
+    }
+  }
+  // A deterministic order for the refills.
+  std::sort(freed->begin(), freed->end(), [](const Site* a, const Site* b) {
+    return SurfacePoints::Pack(a->key) < SurfacePoints::Pack(b->key);
+  });
+}
+
+void SurfaceDistanceLayer::EnableDistances() {
+  if (distances_) return;
+  distances_ = true;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::uint64_t> keys;
+  keys.reserve(sites_.size());
+  for (const auto& [packed, site] : sites_) {
+    if (site->occupied) keys.push_back(packed);
+  }
+  std::sort(keys.begin(), keys.end());  // a deterministic order
+  for (const std::uint64_t packed : keys) Wave(sites_.at(packed));
+  counts_.distance_s += SecondsSince(start);
+}
+
+void SurfaceDistanceLayer::Wave(Site* site) {
+  if (site->element == nullptr) return;  // no return refreshed into it yet
+  ++counts_.waves;
+  site->waved = true;
+  site->marked = *site->element;
+  std::vector<std::pair<Eigen::Vector3i, Site*>> queue;
+  // Its own voxel first (distance 0 wins over any other owner).
+  WorkBlock* block = BlockAt(site->key, true);
+  const std::size_t offset = CellOffset(site->key);
+  block->sq_distance[offset] = 0;
+  block->owner[offset] = site;
+  block->dirty = true;
+  ++counts_.cells_claimed;
+  if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) {
+    site->blocks.push_back(block);
+  }
+  queue.emplace_back(site->key, site);
+  Spread(&queue);
+}
+
+void SurfaceDistanceLayer::Refill(Site* site) {
+  if (!site->waved) return;
+  site->waved = false;
+  // Release the cells it was nearest to, and seed a wave from every
+  // neighbouring cell nearest to another occupied voxel.
+  std::vector<Eigen::Vector3i> released;
+  for (WorkBlock* block : site->blocks) {
+    const Eigen::Vector3i first = block->key * kEdge;
+    for (int i = 0; i < DistanceField::kBlockCells; ++i) {
+      if (block->owner[static_cast<std::size_t>(i)] != site) continue;
+      block->owner[static_cast<std::size_t>(i)] = nullptr;
+      block->sq_distance[static_cast<std::size_t>(i)] = kFar;
+      block->dirty = true;
+      released.push_back(first + Eigen::Vector3i(i >> (2 * DistanceField::kBlockShift),
+                                                  (i >> DistanceField::kBlockShift) & kMask, i & kMask));
+    }
+  }
+  site->blocks.clear();
+  std::vector<std::pair<Eigen::Vector3i, Site*>> queue;
+  for (const Eigen::Vector3i& cell : released) {
+    for (const Eigen::Vector3i& step : kSteps) {
+      const Eigen::Vector3i next = cell + step;
+      if (!InKeyRange(next)) continue;
+      const WorkBlock* block = BlockAt(next, false);
+      if (block == nullptr) continue;
+      Site* owner = block->owner[CellOffset(next)];
+      if (owner != nullptr) queue.emplace_back(next, owner);
+    }
+  }
+  Spread(&queue);
+}
+
+void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>* queue) {
+  const int reach_sq = reach_ * reach_;
+  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried
+  WorkBlock* cached = nullptr;
+  for (std::size_t head = 0; head < queue->size(); ++head) {
+    const auto [cell, site] = (*queue)[head];
+    Eigen::Vector3i recorded_key = Eigen::Vector3i::Constant(-1);  // the last block added to site->blocks
+    for (const Eigen::Vector3i& step : kSteps) {
+      const Eigen::Vector3i next = cell + step;
+      if (!InKeyRange(next)) continue;
+      const int sq = (next - site->key).squaredNorm();
+      if (sq > reach_sq) continue;
+      const Eigen::Vector3i block_key = BlockOf(next);
+      if (block_key != cached_key) {
+        cached = BlockAt(next, true);
+        cached_key = block_key;
+      }
+      const std::size_t offset = CellOffset(next);
+      if (!(sq < cached->sq_distance[offset])) continue;
+      cached->sq_distance[offset] = static_cast<std::uint16_t>(sq);
+      cached->owner[offset] = site;
+      cached->dirty = true;
+      ++counts_.cells_claimed;
+      if (block_key != recorded_key) {
+        recorded_key = block_key;
+        if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
+          site->blocks.push_back(cached);
+        }
+      }
+      queue->emplace_back(next, site);
+    }
+  }
+}
+
+void SurfaceDistanceLayer::MarkIfChanged(Site* site, bool always) {
+  if (site->element == nullptr) return;
+  if (!always && !Differs(site->marked, *site->element, static_cast<float>(options_.resolution_m))) return;
+  site->marked = *site->element;
+  for (WorkBlock* block : site->blocks) block->dirty = true;
+}
+
+void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& block_key) {
+  ++counts_.blocks_computed;
+  auto codes = std::make_shared<DistanceField::Block>(static_cast<std::size_t>(DistanceField::kBlockCells),
+                                                      DistanceField::kMaxSteps);
+  bool any = false;
+  const Eigen::Vector3i first = block_key * kEdge;
+  for (int x = 0; x < kEdge; ++x) {
+    for (int y = 0; y < kEdge; ++y) {
+      for (int z = 0; z < kEdge; ++z) {
+        const auto offset = static_cast<std::size_t>(DistanceField::BlockOffset(x, y, z));
+        const Site* owner = block->owner[offset];
+        if (owner == nullptr) continue;
+        const float d = surfaces_.SignedDistance(*owner->element, Centre(first + Eigen::Vector3i(x, y, z)));
+        (*codes)[offset] = DistanceField::Quantise(d, clamp_m_);
+        any = any || (*codes)[offset] != DistanceField::kMaxSteps;
+      }
+    }
+  }
+  block->exported = any ? std::move(codes) : nullptr;
+  block->dirty = false;
+}
+
+std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::Vector3f& centre_map,
+                                                                  double half_range_m, std::uint64_t sequence) {
+  const auto start = std::chrono::steady_clock::now();
+  for (auto it = blocks_.begin(); it != blocks_.end(); ++it) {
+    if (it->second->dirty) Compute(it->second.get(), it->second->key);
+  }
+  const auto computed = std::chrono::steady_clock::now();
+  counts_.distance_s += std::chrono::duration<double>(computed - start).count();
+  Eigen::Vector3i low = block_min_;
+  Eigen::Vector3i high = block_max_;
+  if (half_range_m > 0.0) {
+    const Eigen::Vector3f reach = Eigen::Vector3f::Constant(static_cast<float>(half_range_m));
+    const double to_key = 1.0 / options_.resolution_m;
+    const Eigen::Vector3d a = ((centre_map - reach).cast<double>() * to_key).array().floor() + kKeyOffset;
+    const Eigen::Vector3d b = ((centre_map + reach).cast<double>() * to_key).array().floor() + kKeyOffset;
+    low = low.cwiseMax(a.cwiseMax(0.0).cwiseMin(kMaxKey).cast<int>() / kEdge);
+    high = high.cwiseMin(b.cwiseMax(0.0).cwiseMin(kMaxKey).cast<int>() / kEdge);
+  }
+  const Eigen::Vector3i dims = (high - low).array() + 1;
+  if ((dims.array() <= 0).any()) {
+    counts_.export_s += SecondsSince(computed);
+    return std::make_shared<const DistanceField>(clamp_m_, sequence);
+  }
+  std::vector<std::shared_ptr<const DistanceField::Block>> table(
+      static_cast<std::size_t>(dims.x()) * static_cast<std::size_t>(dims.y()) * static_cast<std::size_t>(dims.z()));
+  for (const auto& [packed, block] : blocks_) {
+    const Eigen::Vector3i b = Unpack(packed) - low;
+    if ((b.array() < 0).any() || (b.array() >= dims.array()).any()) continue;
+    table[(static_cast<std::size_t>(b.x()) * static_cast<std::size_t>(dims.y()) + static_cast<std::size_t>(b.y())) *
+              static_cast<std::size_t>(dims.z()) +
+          static_cast<std::size_t>(b.z())] = block->exported;
+  }
+  const Eigen::Vector3f origin =
+      ((low.cast<double>().array() * kEdge - kKeyOffset) * options_.resolution_m).cast<float>().matrix();
+  auto field = std::make_shared<const DistanceField>(origin, dims, static_cast<float>(options_.resolution_m), clamp_m_, std::move(table), sequence);
+  counts_.export_s += SecondsSince(computed);
+  return field;
+}
+
+std::vector<Eigen::Vector3f> SurfaceDistanceLayer::VoxelCentres() const {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(sites_.size());
+  for (const auto& [packed, site] : sites_) {
+    if (site->occupied) keys.push_back(packed);
+  }
+  std::sort(keys.begin(), keys.end());  // a deterministic order
+  std::vector<Eigen::Vector3f> centres;
+  centres.reserve(keys.size());
+  for (const std::uint64_t packed : keys) centres.push_back(Centre(Unpack(packed)));
+  return centres;
+}
+
+SurfaceDistanceCounts SurfaceDistanceLayer::counts() const {
+  SurfaceDistanceCounts counts = counts_;
+  counts.elements = surfaces_.size();
+  counts.occupied = occupied_;
+  counts.blocks = blocks_.size();
+  return counts;
+}
+
+}  // namespace unimap::map

@@ -1,0 +1,165 @@
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <tsl/robin_map.h>
+
+#include "map/DistanceField.hpp"
+#include "map/DistanceMapOptions.hpp"
+#include "map/SurfacePoints.hpp"
+
+namespace unimap::map {
+
+// What a SurfaceDistanceLayer did so far.
+struct SurfaceDistanceCounts {
+  std::uint64_t points_added = 0;         // returns integrated into the surface elements
+  std::uint64_t points_out_of_range = 0;  // outside the key range: dropped
+  std::uint64_t waves = 0;                // surface voxels whose nearest-voxel waves ran (new or back)
+  std::uint64_t cells_claimed = 0;        // cells the waves and refills gave a new nearest voxel
+  std::uint64_t misses = 0;               // surface voxels a scan saw through (occupancy lowered)
+  std::uint64_t voxels_cleared = 0;       // surface voxels that became free (their cells refilled)
+  std::uint64_t blocks_computed = 0;      // blocks whose distances were (re)computed at export
+  std::size_t elements = 0;               // voxels with a surface element (occupied or not)
+  std::size_t occupied = 0;               // of those, occupied now
+  std::size_t blocks = 0;                 // distance blocks allocated
+  double surface_s = 0.0;                 // wall time: returns into elements, occupancy, carving
+  double carve_s = 0.0;                   // of which carving (the rays)
+  double distance_s = 0.0;                // wall time: waves, refills and block updates
+  double export_s = 0.0;                  // wall time: assembling exported fields
+};
+
+// The surface of a map and the distances to it, kept up to date at the cost
+// of what changed (docs/mapping.md, "Distance map").
+//
+// Surface: returns go into per-voxel surface elements (SurfacePoints: mean,
+// plane, view); each voxel keeps an occupancy log-odds (OctoMap's model and
+// DistanceMapOptions' probabilities): a return is a hit, once per scan; an
+// occupied voxel that a ray from the sensor to a return of a later scan
+// crosses (before the return's voxel) is a miss, once per scan (OctoMap's
+// insertion with clear_occupied_only). Only occupied voxels are surface.
+// Rays are walked voxel by voxel only through blocks holding an occupied
+// voxel: free space costs one look-up per block.
+//
+// Distances: in blocks of DistanceField::kBlockEdge^3 cells allocated near
+// the surface, each cell keeps its nearest occupied voxel by voxel centre
+// (the transform DynamicEDT3D computes: 6-neighbour breadth-first waves from
+// each newly occupied voxel that stop where cells are nearer to another;
+// when a voxel becomes free, its cells are refilled from the voxels around
+// them) and, for export, the distance from the cell's centre to that
+// voxel's element. A block is recomputed when one of its cells gets a new
+// nearest voxel or the element of such a voxel changes by more than
+// kMoveTolerance. Distances are unsigned (as odometry reads them).
+// Export() shares the blocks unchanged since the previous export.
+//
+// Voxels are named by 16-bit keys per axis (floor(p / resolution) + 32768,
+// as OctoMap's): the map spans +-32768 voxels around the origin; returns
+// outside are dropped and counted. Not thread-safe (SurfaceDistanceMap
+// serialises it).
+class SurfaceDistanceLayer {
+ public:
+  // A block's distances are recomputed when an element nearest to one of
+  // its cells has changed by more than this many voxels since they were:
+  // |mean move| + SurfacePoints::kPatchRadius |normal turn (rad)|, the most
+  // any point of its surface disk moved (a bound on every distance change).
+  static constexpr float kMoveTolerance = 0.1f;
+
+  // options: resolution, clamp, occupancy probabilities, insertion range,
+  // raycast_free_space (carving on or off), compute_distances (false:
+  // elements and occupancy only, until EnableDistances()).
+  explicit SurfaceDistanceLayer(const DistanceMapOptions& options);
+  ~SurfaceDistanceLayer();
+  SurfaceDistanceLayer(const SurfaceDistanceLayer&) = delete;
+  SurfaceDistanceLayer& operator=(const SurfaceDistanceLayer&) = delete;
+
+  // Integrates the returns (finite, map frame) seen from sensor_map: hits,
+  // then misses of the occupied voxels the scan saw through, then (with
+  // distances on) the waves, refills and marks of what changed.
+  void Insert(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& sensor_map);
+  // Turns the distances on: every occupied voxel's wave once.
+  void EnableDistances();
+  bool distances() const { return distances_; }
+
+  // The distance field over the blocks within half_range_m of centre_map
+  // (every block when half_range_m <= 0), tagged with sequence; blocks
+  // unchanged since the previous export are shared with it.
+  std::shared_ptr<const DistanceField> Export(const Eigen::Vector3f& centre_map, double half_range_m,
+                                              std::uint64_t sequence);
+
+  // Centres of the occupied voxels (map frame), in key order.
+  std::vector<Eigen::Vector3f> VoxelCentres() const;
+  const SurfacePoints& surfaces() const { return surfaces_; }
+  SurfaceDistanceCounts counts() const;
+
+ private:
+  struct WorkBlock;
+  // Packed keys are structured (x, y, z in 16-bit fields): mixed before the
+  // power-of-two tables take their low bits (MurmurHash3's finaliser).
+  struct KeyHash {
+    std::size_t operator()(std::uint64_t key) const {
+      key ^= key >> 33;
+      key *= 0xff51afd7ed558ccdull;
+      key ^= key >> 33;
+      key *= 0xc4ceb9fe1a85ec53ull;
+      key ^= key >> 33;
+      return static_cast<std::size_t>(key);
+    }
+  };
+  // A voxel that holds returns.
+  struct Site {
+    Eigen::Vector3i key = Eigen::Vector3i::Zero();
+    const SurfacePoints::Element* element = nullptr;  // the live element (SurfacePoints keeps it)
+    SurfacePoints::Element marked;                     // as of the last time its blocks were marked
+    float log_odds = 0.0f;                             // occupancy
+    bool occupied = false;                             // log_odds > 0 (and counted as surface)
+    bool waved = false;                                // owns cells (distances on, occupied)
+    std::uint64_t missed_in = 0;                       // the last scan whose rays crossed it
+    std::vector<WorkBlock*> blocks;                    // blocks where it was ever nearest to a cell
+  };
+
+  bool KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* key) const;
+  Eigen::Vector3f Centre(const Eigen::Vector3i& key) const;
+  WorkBlock* BlockAt(const Eigen::Vector3i& key, bool create);
+  // The misses of the occupied voxels the rays of a scan (its returns'
+  // voxels, from sensor_map) cross; *freed receives those that became free.
+  void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
+             std::vector<Site*>* freed);
+  // Sets or clears site's bit in the occupancy masks.
+  void SetOccupied(Site* site, bool occupied);
+  // Claims cells for site from its voxel outwards (see the class comment).
+  void Wave(Site* site);
+  // Gives the cells of a site that became free to their next nearest occupied voxels.
+  void Refill(Site* site);
+  // Lower wave from queued (cell, site) pairs: claims the neighbours each site is nearer to.
+  void Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>* queue);
+  void MarkIfChanged(Site* site, bool always);
+  void Compute(WorkBlock* block, const Eigen::Vector3i& block_key);
+
+  DistanceMapOptions options_;
+  float clamp_m_;
+  int reach_;           // a wave goes at most this many voxels from its voxel (the clamp, rounded up, plus one)
+  float log_odds_hit_;  // occupancy update of a return
+  float log_odds_miss_;  // of a see-through (negative)
+  float log_odds_min_;
+  float log_odds_max_;
+  bool distances_;
+  SurfacePoints surfaces_;
+  std::deque<Site> site_store_;                                           // every site (stable addresses)
+  tsl::robin_map<std::uint64_t, Site*, KeyHash> sites_;                                // by packed voxel key
+  tsl::robin_map<std::uint64_t, std::unique_ptr<WorkBlock>, KeyHash> blocks_;          // by packed block key
+  std::size_t occupied_ = 0;                                              // sites occupied now
+  Eigen::Vector3i block_min_ = Eigen::Vector3i::Constant(1 << 20);       // extent of blocks_
+  Eigen::Vector3i block_max_ = Eigen::Vector3i::Constant(-(1 << 20));
+  // Per block holding an occupied voxel: which of its voxels are.
+  tsl::robin_map<std::uint64_t, std::array<std::uint64_t, DistanceField::kBlockCells / 64>, KeyHash>
+      occupied_masks_;
+  std::uint64_t scans_ = 0;  // scans inserted (stamps Site::missed_in)
+  SurfaceDistanceCounts counts_;
+};
+
+}  // namespace unimap::map

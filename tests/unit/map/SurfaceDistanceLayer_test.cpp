@@ -1,0 +1,154 @@
+#include "map/SurfaceDistanceLayer.hpp"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace unimap::map {
+namespace {
+
+using V3 = Eigen::Vector3f;
+
+constexpr double kResolution = 0.1;
+constexpr double kClamp = 0.5;
+
+DistanceMapOptions Options(bool distances = true) {
+  DistanceMapOptions o;
+  o.resolution_m = kResolution;
+  o.clamp_distance_m = kClamp;
+  o.compute_distances = distances;
+  return o;
+}
+
+// Returns of a floor (z = 0.03) and a wall (x = 2.02) around the origin,
+// seen from (0, 0, 1), with 5 mm of noise.
+std::vector<V3> FloorAndWall(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.5f, 1.5f);
+  std::normal_distribution<float> noise(0.0f, 0.005f);
+  std::vector<V3> points;
+  for (int i = 0; i < 4000; ++i) points.emplace_back(u(rng), u(rng), 0.03f + noise(rng));
+  for (int i = 0; i < 3000; ++i) points.emplace_back(2.02f + noise(rng), u(rng), 0.75f + 0.5f * u(rng));
+  return points;
+}
+
+// The distance from p to the element of the surface voxel whose centre is
+// nearest to p (what the layer's waves find, like DynamicEDT3D); false when
+// two voxel centres are equally near (either may be taken).
+bool NearestVoxelDistance(const SurfaceDistanceLayer& layer, const V3& p, float* distance) {
+  float best_sq = 1e9f, second_sq = 1e9f;
+  const SurfacePoints::Element* best = nullptr;
+  layer.surfaces().ForEach([&](std::uint64_t key, const SurfacePoints::Element& e) {
+    const V3 centre((static_cast<float>((key >> 32) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
+                    (static_cast<float>((key >> 16) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
+                    (static_cast<float>(key & 0xffff) - 32768.0f + 0.5f) * 0.1f);
+    const float sq = (centre - p).squaredNorm();
+    if (sq < best_sq) {
+      second_sq = best_sq;
+      best_sq = sq;
+      best = &e;
+    } else if (sq < second_sq) {
+      second_sq = sq;
+    }
+  });
+  if (best == nullptr || second_sq - best_sq < 1e-4f) return false;
+  *distance = std::min(layer.surfaces().SignedDistance(*best, p), static_cast<float>(kClamp));
+  return true;
+}
+
+TEST(SurfaceDistanceLayer, DistancesAreToTheSurfaceInsideTheVoxels) {
+  SurfaceDistanceLayer layer(Options());
+  layer.Insert(FloorAndWall(1), V3(0.0f, 0.0f, 1.0f));
+  const auto field = layer.Export(V3::Zero(), 0.0, 1);
+  // Above the middle of the floor: the height above z = 0.03 (cell centres).
+  for (const float z : {0.05f, 0.15f, 0.25f, 0.35f}) {
+    EXPECT_NEAR(field->Distance(V3(-0.45f, 0.35f, z)), std::abs(z - 0.03f), 0.01f) << z;
+  }
+  // In front of the wall, and farther than the clamp from everything.
+  EXPECT_NEAR(field->Distance(V3(1.85f, 0.05f, 0.75f)), 0.17f, 0.01f);
+  EXPECT_EQ(field->Distance(V3(0.05f, 0.05f, 1.05f)), static_cast<float>(kClamp));
+  const SurfaceDistanceCounts counts = layer.counts();
+  EXPECT_EQ(counts.points_added, 7000u);
+  EXPECT_EQ(counts.points_out_of_range, 0u);
+  EXPECT_GT(counts.elements, 900u);
+}
+
+TEST(SurfaceDistanceLayer, WavesFindTheNearestSurfaceVoxel) {
+  SurfaceDistanceLayer layer(Options());
+  const std::vector<V3> points = FloorAndWall(2);
+  // Three scans: elements appear and move between them.
+  for (int part = 0; part < 3; ++part) {
+    const std::vector<V3> slice(points.begin() + part * 2000, points.begin() + std::min<int>(7000, (part + 1) * 2000 + 1000));
+    layer.Insert(slice, V3(0.0f, 0.0f, 1.0f));
+  }
+  const auto field = layer.Export(V3::Zero(), 0.0, 1);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.2f, 2.4f);
+  int checked = 0;
+  for (int i = 0; i < 400; ++i) {
+    // Cell centres (the field's samples) near the surfaces.
+    const V3 p = ((V3(u(rng), u(rng) * 0.5f, u(rng) * 0.4f) / 0.1f).array().floor() + 0.5f).matrix() * 0.1f;
+    float truth = 0.0f;
+    if (!NearestVoxelDistance(layer, p, &truth) || !(truth < kClamp - 0.05)) continue;
+    // Elements change by up to kMoveTolerance voxels before their blocks are redone.
+    EXPECT_NEAR(field->Distance(p), truth, SurfaceDistanceLayer::kMoveTolerance * kResolution + 1e-3)
+        << p.transpose();
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(SurfaceDistanceLayer, EnablingLaterGivesTheSameField) {
+  SurfaceDistanceLayer incremental(Options());
+  SurfaceDistanceLayer batch(Options(false));
+  const std::vector<V3> points = FloorAndWall(4);
+  for (int part = 0; part < 7; ++part) {
+    const std::vector<V3> slice(points.begin() + part * 1000, points.begin() + (part + 1) * 1000);
+    incremental.Insert(slice, V3(0.0f, 0.0f, 1.0f));
+    batch.Insert(slice, V3(0.0f, 0.0f, 1.0f));
+  }
+  EXPECT_EQ(batch.Export(V3::Zero(), 0.0, 1)->CellCount(), 0u);  // no distances yet
+  batch.EnableDistances();
+  const auto a = incremental.Export(V3::Zero(), 0.0, 1);
+  const auto b = batch.Export(V3::Zero(), 0.0, 1);
+  ASSERT_EQ(a->dims(), b->dims());
+  ASSERT_TRUE(a->origin().isApprox(b->origin()));
+  float largest = 0.0f;
+  for (int x = 0; x < a->dims().x(); ++x) {
+    for (int y = 0; y < a->dims().y(); ++y) {
+      for (int z = 0; z < a->dims().z(); ++z) {
+        const Eigen::Vector3i cell(x, y, z);
+        largest = std::max(largest, std::abs(a->CellDistance(cell) - b->CellDistance(cell)));
+      }
+    }
+  }
+  EXPECT_LE(largest, SurfaceDistanceLayer::kMoveTolerance * kResolution + 1e-3);
+}
+
+TEST(SurfaceDistanceLayer, ExportsShareUnchangedBlocksAndFollowTheBox) {
+  SurfaceDistanceLayer layer(Options());
+  layer.Insert(FloorAndWall(5), V3(0.0f, 0.0f, 1.0f));
+  const auto first = layer.Export(V3::Zero(), 0.0, 1);
+  const auto again = layer.Export(V3::Zero(), 0.0, 2);
+  EXPECT_EQ(again->sequence(), 2u);
+  EXPECT_EQ(again->StoredBlocks(), first->StoredBlocks());
+  EXPECT_EQ(again->Distance(V3(0.05f, 0.05f, 0.25f)), first->Distance(V3(0.05f, 0.05f, 0.25f)));
+  // A box of 0.5 m around (-1.2, 0, 0) leaves the wall out.
+  const auto near = layer.Export(V3(-1.2f, 0.0f, 0.0f), 0.5, 3);
+  EXPECT_LT(near->StoredBlocks(), first->StoredBlocks());
+  EXPECT_EQ(near->Distance(V3(1.85f, 0.05f, 0.75f)), static_cast<float>(kClamp));
+}
+
+TEST(SurfaceDistanceLayer, PointsOutsideTheKeyRangeAreDroppedAndCounted) {
+  SurfaceDistanceLayer layer(Options());
+  layer.Insert({V3(1e5f, 0.0f, 0.0f), V3(0.0f, std::nanf(""), 0.0f), V3(0.5f, 0.5f, 0.5f)}, V3::Zero());
+  EXPECT_EQ(layer.counts().points_added, 1u);
+  EXPECT_EQ(layer.counts().points_out_of_range, 2u);
+  EXPECT_EQ(layer.VoxelCentres().size(), 1u);
+  EXPECT_TRUE(layer.VoxelCentres().front().isApprox(V3(0.55f, 0.55f, 0.55f)));
+}
+
+}  // namespace
+}  // namespace unimap::map
