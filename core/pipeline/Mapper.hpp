@@ -31,6 +31,14 @@ struct MapperStats {
   std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
 };
 
+// An accepted loop closure, for drawing: where the closing 3D scan was and
+// the origin of the older submap it matched (world frame, optimised poses).
+struct LoopClosureLink {
+  double time_s = 0.0;                                  // the closing 3D scan's time
+  Eigen::Vector3d scan_world = Eigen::Vector3d::Zero();    // its body position
+  Eigen::Vector3d submap_world = Eigen::Vector3d::Zero();  // the matched submap's origin
+};
+
 // The paper's full system (DESIGN.md 1): wires the Localizer (plugin ->
 // deskew -> GPF -> ESKF), the SubmapManager it matches against and inserts
 // into, the TrajectoryGraph (a node per 3D scan and per submap), the
@@ -62,6 +70,8 @@ class Mapper : public EventSink {
   const Eigen::Isometry3d& T_world_local() const { return graph_.T_world_local(); }
   const LocalizerStats& localizer_stats() const { return localizer_->stats(); }
   MapperStats stats() const;
+  // Every accepted loop closure, in acceptance order.
+  std::vector<LoopClosureLink> LoopClosureLinks() const;
 
  private:
   void OnKeyScan(KeyScan&& key);
@@ -79,6 +89,12 @@ class Mapper : public EventSink {
   double path_m_ = 0.0;                                     // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;
+  struct AcceptedClosure {
+    double time_s;
+    int key_scan;
+    int submap_id;
+  };
+  std::vector<AcceptedClosure> closures_;                   // for LoopClosureLinks
   MapperStats stats_;
   std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above
 };
