@@ -103,7 +103,7 @@ ReportData BuildReportData(const RunFolder& f, const ReportOptions& options) {
   std::optional<eval::TrajectoryEvaluation> evaluation;
   if (!f.truth_file.empty() && !estimate.empty()) {
     try {
-      evaluation = eval::EvaluateTrajectory(estimate, io::ReadTumTrajectory(f.truth_file), {});
+      evaluation = eval::EvaluateTrajectory(estimate, io::ReadTumTrajectory(f.truth_file), options.evaluation);
     } catch (const InputError& e) {
       notes.push_back("Not evaluated against " + f.truth_file.string() + ": " + e.what());
     }

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "eval/TrajectoryEvaluation.hpp"
+
 namespace unimap::report {
 
 // Distance (m) of a point in the truth's (world) frame to the true surfaces.
@@ -20,6 +22,7 @@ struct ReportOptions {
   std::filesystem::path odometry_file;  // a second estimate drawn beside it; empty: trajectory_odometry.tum if any
   std::filesystem::path truth_file;     // ground truth (TUM); empty: groundtruth.tum of run.json's dataset, if any
   std::filesystem::path map_file;       // .ply or .pcd; empty: map.ply, else map.pcd, else run.json's prior map
+  eval::EvaluationOptions evaluation;    // how the estimate is compared with the truth (as metrics.json)
   std::size_t map_point_budget = 250000;  // most map points drawn (every k-th point beyond it)
   std::size_t plot_row_budget = 20000;    // most rows per plot and samples per drawn trajectory
   // Colours the map by its error when set and the truth gives an alignment

@@ -195,7 +195,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
       map_extras =
           MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source));
     }
-    eval::WriteEvaluationReport(evaluation, {trajectory.string(), truth_file.string()}, out, map_extras);
+    eval::WriteEvaluationReport(evaluation, out, map_extras);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       std::cout << "  " << row.key << " = " << row.value << '\n';
     }
