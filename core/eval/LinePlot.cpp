@@ -190,8 +190,10 @@ void LinePlot::Render(cairo_t* cr, const Rect& area) const {
         pen_down = false;
         continue;
       }
-      if (pen_down) cairo_line_to(cr, to_px(p.x()), to_py(p.y()));
-      else cairo_move_to(cr, to_px(p.x()), to_py(p.y()));
+      if (pen_down)
+        cairo_line_to(cr, to_px(p.x()), to_py(p.y()));
+      else
+        cairo_move_to(cr, to_px(p.x()), to_py(p.y()));
       pen_down = true;
     }
     if (s.points.size() == 1) cairo_line_to(cr, to_px(s.points[0].x()), to_py(s.points[0].y()));  // a dot
@@ -200,7 +202,8 @@ void LinePlot::Render(cairo_t* cr, const Rect& area) const {
   cairo_restore(cr);
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   cairo_set_line_width(cr, 1.0);
-  cairo_rectangle(cr, std::round(plot.x) + 0.5, std::round(plot.y) + 0.5, std::round(plot.width), std::round(plot.height));
+  cairo_rectangle(cr, std::round(plot.x) + 0.5, std::round(plot.y) + 0.5, std::round(plot.width),
+                  std::round(plot.height));
   cairo_stroke(cr);
 
   // Title (centred), y label (rotated, left), x label (centred below the ticks).
@@ -226,8 +229,10 @@ void LinePlot::Render(cairo_t* cr, const Rect& area) const {
     const double row_h = kTickFont + 7, box_w = legend_w + 50, box_h = static_cast<double>(named.size()) * row_h + 8;
     const double left = plot.x + 8, right = plot.x + plot.width - box_w - 8;
     const double upper = plot.y + 8, lower = plot.y + plot.height - box_h - 8;
-    const Rect corners[4] = {{right, upper, box_w, box_h}, {left, upper, box_w, box_h},
-                             {right, lower, box_w, box_h}, {left, lower, box_w, box_h}};
+    const Rect corners[4] = {{right, upper, box_w, box_h},
+                             {left, upper, box_w, box_h},
+                             {right, lower, box_w, box_h},
+                             {left, lower, box_w, box_h}};
     int covered[4] = {0, 0, 0, 0};
     for (const Series& s : series_) {
       for (const Eigen::Vector2d& p : s.points) {

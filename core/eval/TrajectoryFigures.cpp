@@ -38,7 +38,8 @@ std::string RenderPng(int width, int height, const std::function<void(cairo_t*)>
         return CAIRO_STATUS_SUCCESS;
       },
       &png);
-  if (status != CAIRO_STATUS_SUCCESS) throw Error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw Error(std::string("PNG encoding failed: ") + cairo_status_to_string(status));
   return png;
 }
 
@@ -68,7 +69,9 @@ Figure TrajectoryView(const TrajectoryEvaluation& ev, int a, int b, const std::s
   plot.AddSeries(std::move(aligned));
   plot.AddSeries(std::move(anchored));
   const int height = static_cast<int>(plot.FittedHeight(kWidth, 320, 900));
-  return {file, caption, RenderPng(kWidth, height, [&](cairo_t* cr) { plot.Render(cr, {0, 0, kWidth, 1.0 * height}); })};
+  return {file, caption, RenderPng(kWidth, height, [&](cairo_t* cr) {
+            plot.Render(cr, {0, 0, kWidth, 1.0 * height});
+          })};
 }
 
 // Three stacked panels of one vector series over time since the first pose.
@@ -98,10 +101,12 @@ Figure ErrorPanels(const TrajectoryEvaluation& ev, const std::function<Eigen::Ve
 
 std::vector<Figure> RenderTrajectoryFigures(const TrajectoryEvaluation& ev) {
   std::vector<Figure> figures;
-  figures.push_back(TrajectoryView(ev, 0, 1, "trajectory_top.png", "Trajectory, top view (x-y)",
-                                   "Top view (equal scales): truth, start-anchored estimate and ATE-aligned estimate."));
-  figures.push_back(TrajectoryView(ev, 0, 2, "trajectory_side.png", "Trajectory, side view (x-z)",
-                                   "Side view (equal scales): truth, start-anchored estimate and ATE-aligned estimate."));
+  figures.push_back(
+      TrajectoryView(ev, 0, 1, "trajectory_top.png", "Trajectory, top view (x-y)",
+                     "Top view (equal scales): truth, start-anchored estimate and ATE-aligned estimate."));
+  figures.push_back(
+      TrajectoryView(ev, 0, 2, "trajectory_side.png", "Trajectory, side view (x-z)",
+                     "Side view (equal scales): truth, start-anchored estimate and ATE-aligned estimate."));
   figures.push_back(ErrorPanels(
       ev, [](const PoseError& e) { return e.position_error_m; }, {"x", "y", "z"}, "m", "position_error.png",
       "Position error (start-anchored estimate minus truth) per axis over time."));

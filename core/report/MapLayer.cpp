@@ -16,7 +16,8 @@ namespace {
 // x y z and intensity (0 for PLY files) of every finite point.
 std::vector<Eigen::Vector4f> LoadPoints(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   std::vector<Eigen::Vector4f> xyzi;
   if (ext == ".pcd") {
     io::LoadPcdXyzi(file, &xyzi);

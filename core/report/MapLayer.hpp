@@ -14,10 +14,10 @@ namespace unimap::report {
 
 // What MapLayer drew.
 struct MapLayerCounts {
-  std::size_t total = 0;     // points in the file
-  std::size_t shown = 0;     // points drawn (at most the budget)
-  bool intensity = false;    // the file has intensities that vary
-  bool error = false;        // points coloured by their error
+  std::size_t total = 0;   // points in the file
+  std::size_t shown = 0;   // points drawn (at most the budget)
+  bool intensity = false;  // the file has intensities that vary
+  bool error = false;      // points coloured by their error
 };
 
 // Reads a .ply or .pcd map, keeps every k-th point to fit budget (non-finite

@@ -31,8 +31,8 @@ Json Trajectory(const std::string& name, const std::string& label, const std::st
 
 Json Plot(const std::string& id, const std::string& title, const std::string& ylabel, const Json& labels,
           const Json& colors, const Json& dashed, const Float32Table& table) {
-  return {{"id", id},           {"title", title},   {"ylabel", ylabel}, {"labels", labels},
-          {"colors", colors},   {"dashed", dashed}, {"rows", table.rows()}, {"data", table.Base64()}};
+  return {{"id", id},         {"title", title},   {"ylabel", ylabel},     {"labels", labels},
+          {"colors", colors}, {"dashed", dashed}, {"rows", table.rows()}, {"data", table.Base64()}};
 }
 
 // The error and position plots of an evaluation (truth frame, ATE-aligned estimate).
@@ -50,8 +50,8 @@ Json EvaluationPlots(const eval::TrajectoryEvaluation& ev, double t0, std::size_
   return Json::array(
       {Plot("position", "Position over time: ATE-aligned estimate (solid) and truth (dashed), truth frame",
             "position [m]", {"time [s]", "x", "y", "z", "x truth", "y truth", "z truth"},
-            {"#d62728", "#2ca02c", "#1f77b4", "#7f0000", "#0b5d1e", "#0b3c6e"},
-            {false, false, false, true, true, true}, position),
+            {"#d62728", "#2ca02c", "#1f77b4", "#7f0000", "#0b5d1e", "#0b3c6e"}, {false, false, false, true, true, true},
+            position),
        Plot("position_error", "Position error (start-anchored estimate minus truth)", "error [m]",
             {"time [s]", "x", "y", "z"}, xyz_colors, {false, false, false}, position_error),
        Plot("rotation_error", "Rotation error log(q_est^-1 q_true) (start-anchored)", "error [deg]",
@@ -65,9 +65,8 @@ Json EstimatePlots(const std::vector<StampedPose>& estimate, double t0, std::siz
     const Eigen::Vector3d p = estimate[i].T_map_body.translation();
     position.AddRow({estimate[i].time_s - t0, p.x(), p.y(), p.z()});
   }
-  return Json::array({Plot("position", "Position over time (map frame)", "position [m]",
-                           {"time [s]", "x", "y", "z"}, {"#d62728", "#2ca02c", "#1f77b4"},
-                           {false, false, false}, position)});
+  return Json::array({Plot("position", "Position over time (map frame)", "position [m]", {"time [s]", "x", "y", "z"},
+                           {"#d62728", "#2ca02c", "#1f77b4"}, {false, false, false}, position)});
 }
 
 std::string Title(const RunFolder& f) {
@@ -75,7 +74,8 @@ std::string Title(const RunFolder& f) {
   std::string dataset = f.run.value("dataset", "");
   while (!dataset.empty() && dataset.back() == '/') dataset.pop_back();
   if (payload.empty() && dataset.empty()) return "unimap report: " + f.folder.filename().string();
-  return "unimap run: " + (payload.empty() ? "" : payload + " on ") + std::filesystem::path(dataset).filename().string();
+  return "unimap run: " + (payload.empty() ? "" : payload + " on ") +
+         std::filesystem::path(dataset).filename().string();
 }
 
 }  // namespace
@@ -111,7 +111,8 @@ ReportData BuildReportData(const RunFolder& f, const ReportOptions& options) {
   Json trajectories = Json::array();
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
   const std::size_t budget = options.plot_row_budget;
-  if (!estimate.empty()) trajectories.push_back(Trajectory("estimate", "estimate", "#e4572e", estimate, t0, budget, identity));
+  if (!estimate.empty())
+    trajectories.push_back(Trajectory("estimate", "estimate", "#e4572e", estimate, t0, budget, identity));
   if (!f.odometry_file.empty()) {
     trajectories.push_back(Trajectory("odometry", "odometry (before optimisation)", "#f2a541",
                                       io::ReadTumTrajectory(f.odometry_file), t0, budget, identity));
@@ -123,7 +124,8 @@ ReportData BuildReportData(const RunFolder& f, const ReportOptions& options) {
     trajectories.push_back(Trajectory("truth", "ground truth (ATE-aligned into the map frame)", "#17becf",
                                       evaluation->association.truth_span, t0, budget, T_world_map->inverse()));
     counts.truth_pairs = evaluation->errors.poses.size();
-    if (f.metrics.empty()) payload["metrics"] = RunSections({}, Json::parse(eval::MetricsToJson(evaluation->metrics)))["metrics"];
+    if (f.metrics.empty())
+      payload["metrics"] = RunSections({}, Json::parse(eval::MetricsToJson(evaluation->metrics)))["metrics"];
     plots = EvaluationPlots(*evaluation, t0, budget);
   } else if (!estimate.empty()) {
     plots = EstimatePlots(estimate, t0, budget);

@@ -9,11 +9,20 @@ std::string EscapeHtml(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -35,14 +44,15 @@ std::string RenderReportHtml(const nlohmann::ordered_json& payload) {
       safe_json += c;
     }
   }
-  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-                     EscapeHtml(payload.value("title", std::string("unimap report"))) + "</title>\n<style>\n" +
-                     std::string(assets.dygraphs_css) + "\n</style>\n<style>\n" + std::string(assets.report_css) +
-                     "\n</style>\n</head>\n<body>\n<noscript>This report is drawn by JavaScript (inlined in the file; no "
-                     "network needed): enable JavaScript to see it.</noscript>\n<div id=\"report\"></div>\n"
-                     "<script type=\"application/json\" id=\"report-data\">" +
-                     safe_json + "</script>\n";
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+      EscapeHtml(payload.value("title", std::string("unimap report"))) + "</title>\n<style>\n" +
+      std::string(assets.dygraphs_css) + "\n</style>\n<style>\n" + std::string(assets.report_css) +
+      "\n</style>\n</head>\n<body>\n<noscript>This report is drawn by JavaScript (inlined in the file; no "
+      "network needed): enable JavaScript to see it.</noscript>\n<div id=\"report\"></div>\n"
+      "<script type=\"application/json\" id=\"report-data\">" +
+      safe_json + "</script>\n";
   html += Script(assets.three_js);
   html += Script(assets.orbit_controls_js);
   html += Script(assets.dygraphs_js);

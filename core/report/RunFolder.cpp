@@ -1,5 +1,6 @@
 #include "report/RunFolder.hpp"
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -68,14 +69,17 @@ RunFolder ResolveRunFolder(const ReportOptions& options) {
   std::string reason;
   if (!options.IsValid(&reason)) throw InputError("report options: " + reason);
   std::error_code ec;
-  if (!fs::is_directory(options.folder, ec)) throw InputError("run folder " + options.folder.string() + ": no such folder");
+  if (!fs::is_directory(options.folder, ec))
+    throw InputError("run folder " + options.folder.string() + ": no such folder");
   RunFolder f;
   f.folder = options.folder;
   f.run = ReadJsonObject(f.folder / "run.json");
   f.metrics = ReadJsonObject(f.folder / "metrics.json");
   f.estimate_file = Pick(options.estimate_file, "estimate", {f.folder / "trajectory.tum"});
   f.odometry_file = Pick(options.odometry_file, "odometry", {f.folder / "trajectory_odometry.tum"});
-  if (f.odometry_file == f.estimate_file) f.odometry_file.clear();
+  if (!f.odometry_file.empty() && !f.estimate_file.empty() && fs::equivalent(f.odometry_file, f.estimate_file, ec)) {
+    f.odometry_file.clear();  // e.g. unimap evaluate --estimate RUN_DIR/trajectory_odometry.tum
+  }
   const std::string dataset = StringAt(f.run, nullptr, "dataset");
   const fs::path dataset_truth = dataset.empty() ? fs::path() : fs::path(dataset) / "groundtruth.tum";
   f.truth_file = Pick(options.truth_file, "truth", {dataset_truth});
@@ -85,7 +89,8 @@ RunFolder ResolveRunFolder(const ReportOptions& options) {
   f.loops_file = Pick({}, "loop closures", {f.folder / "loop_closures.csv"});
 
   if (f.estimate_file.empty() && f.map_file.empty()) {
-    throw InputError("run folder " + f.folder.string() + ": nothing to report (no trajectory.tum, no map.ply or map.pcd)");
+    throw InputError("run folder " + f.folder.string() +
+                     ": nothing to report (no trajectory.tum, no map.ply or map.pcd)");
   }
   if (f.truth_file.empty()) {
     f.notes.push_back(dataset.empty() ? "No ground truth: run.json names no dataset and none was given."

@@ -70,11 +70,16 @@ Json Cards(const Json& run, const Json& metrics) {
     std::vector<std::string> path;
   };
   const std::vector<Card> cards = {
-      {&run, {"payload"}},           {&run, {"motion"}},
-      {&run, {"realtime_factor"}},   {&run, {"data_duration_s"}},
-      {&run, {"peak_rss_mb"}},       {&run, {"mapping", "submaps"}},
-      {&run, {"mapping", "loop_closures"}}, {&metrics, {"ate_rmse_m"}},
-      {&run, {"position_rmse_m"}},   {&metrics, {"map_error_aligned_mean_m"}},
+      {&run, {"payload"}},
+      {&run, {"motion"}},
+      {&run, {"realtime_factor"}},
+      {&run, {"data_duration_s"}},
+      {&run, {"peak_rss_mb"}},
+      {&run, {"mapping", "submaps"}},
+      {&run, {"mapping", "loop_closures"}},
+      {&metrics, {"ate_rmse_m"}},
+      {&run, {"position_rmse_m"}},
+      {&metrics, {"map_error_aligned_mean_m"}},
   };
   Json out = Json::array();
   for (const Card& card : cards) {

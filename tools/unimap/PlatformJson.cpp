@@ -12,7 +12,7 @@ JsonObject PlatformParametersJson(const std::string& platform_file) {
     o.Add("value", ToString(p.value));
     o.Add("symbol", p.spec.symbol);
     o.Add("source", p.source == ParameterSource::kPlatformFile ? platform.file + ":" + std::to_string(p.line)
-                                                                : std::string("plugin default"));
+                                                               : std::string("plugin default"));
     o.Add("meaning", p.spec.description);
     parameters.Add(p.spec.key, o);
   }

@@ -13,12 +13,12 @@ namespace unimap::cli {
 namespace {
 
 struct ReportCliOptions {
-  std::string folder;     // the run folder (report.html goes here)
-  std::string estimate;   // trajectory (TUM); empty: folder/trajectory.tum
-  std::string odometry;   // second trajectory (TUM); empty: folder/trajectory_odometry.tum, if any
-  std::string truth;      // ground truth (TUM); empty: run.json's dataset/groundtruth.tum, if any
-  std::string map;        // map (.ply / .pcd); empty: folder/map.ply, map.pcd, or run.json's prior map
-  std::string world;      // true world (world.yaml); empty: beside the truth, if any
+  std::string folder;    // the run folder (report.html goes here)
+  std::string estimate;  // trajectory (TUM); empty: folder/trajectory.tum
+  std::string odometry;  // second trajectory (TUM); empty: folder/trajectory_odometry.tum, if any
+  std::string truth;     // ground truth (TUM); empty: run.json's dataset/groundtruth.tum, if any
+  std::string map;       // map (.ply / .pcd); empty: folder/map.ply, map.pcd, or run.json's prior map
+  std::string world;     // true world (world.yaml); empty: beside the truth, if any
   std::size_t map_points = report::ReportOptions{}.map_point_budget;  // most map points drawn
 };
 

@@ -18,7 +18,7 @@ TEST_F(RunFolderTest, HoldsThePlotsTrajectoriesAndABudgetOfTheMap) {
   std::ofstream(dir_ / "run" / "loop_closures.csv") << "# header\n1.0 0 0 1 2 0 1\n2.0 1 0 1 3 0 1\n";
   ReportOptions options;
   options.folder = dir_ / "run";
-  options.map_point_budget = 300;  // every 4th point: 250
+  options.map_point_budget = 300;                                                       // every 4th point: 250
   options.surface_distance = [](const Eigen::Vector3d& p) { return std::abs(p.z()); };  // the floor
   const ReportData data = BuildReportData(ResolveRunFolder(options), options);
   EXPECT_EQ(data.counts.estimate_poses, 50u);
