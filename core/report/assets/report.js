@@ -102,6 +102,20 @@
       const size = el('input', {type: 'range', min: '1', max: '6', step: '0.5', value: '2', 'aria-label': 'point size'});
       size.addEventListener('input', () => viewer.setPointSize(Number(size.value)));
       toolbar.append(el('label', {}, 'point size ', size));
+      const zmin = viewer.bounds.min.z, zmax = viewer.bounds.max.z;
+      const cut = el('input', {type: 'range', min: String(zmin), max: String(zmax), step: String((zmax - zmin) / 100),
+                               value: String(zmax), 'aria-label': 'hide the map above this height'});
+      const cutValue = el('span.num', {}, 'off');
+      cut.addEventListener('input', () => {
+        const z = Number(cut.value);
+        viewer.setHeightCut(z >= zmax ? Infinity : z);
+        cutValue.textContent = z >= zmax ? 'off' : format(z, 2) + ' m';
+      });
+      toolbar.append(el('label', {}, 'hide above ', cut, ' ', cutValue));
+      report.setHeightCut = (fraction) => {  // 0..1 of the height range, from scripts (the README screenshot)
+        cut.value = String(zmin + fraction * (zmax - zmin));
+        cut.dispatchEvent(new Event('input'));
+      };
       recolor();
     }
     const layerNames = [].concat(map ? [['map', 'map']] : [], trajectories.map(t => [t.name, t.label]),
@@ -118,7 +132,7 @@
       parts.push(data.map.shown === data.map.total
         ? 'all ' + data.map.total.toLocaleString('en-US') + ' map points shown'
         : data.map.shown.toLocaleString('en-US') + ' of ' + data.map.total.toLocaleString('en-US') +
-          ' map points shown (every ' + Math.ceil(data.map.total / data.map.shown) + 'th)');
+          ' map points shown (one in ' + Math.ceil(data.map.total / data.map.shown) + ')');
     }
     parts.push('grid cells ' + viewer.gridCellM + ' m');
     status.textContent = parts.join(' · ');

@@ -37,6 +37,7 @@
     this.renderer = new THREE.WebGLRenderer({antialias: true});
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setClearColor(0x11151c);
+    this.renderer.localClippingEnabled = true;  // the map's height cut (setHeightCut)
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
     this.bounds = new THREE.Box3();
@@ -55,6 +56,8 @@
     geometry.setAttribute('position', new THREE.BufferAttribute(map.xyz, 3));
     geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(map.xyz.length), 3));
     const material = new THREE.PointsMaterial({size: 2, sizeAttenuation: false, vertexColors: THREE.VertexColors});
+    this.heightCut = new THREE.Plane(new THREE.Vector3(0, 0, -1), Infinity);
+    material.clippingPlanes = [this.heightCut];
     const points = new THREE.Points(geometry, material);
     this.scene.add(points);
     this.layers.map = points;
@@ -160,7 +163,7 @@
     const radius = Math.max(size.length() / 2, 0.5);
     if (this.view === '3d') {
       this.camera.aspect = this.aspect;
-      this.camera.position.set(center.x - 0.55 * radius, center.y - 1.15 * radius, center.z + 0.9 * radius);
+      this.camera.position.set(center.x - 0.45 * radius, center.y - 1.0 * radius, center.z + 0.7 * radius);
       this.camera.near = radius / 1000;
       this.camera.far = radius * 100;
     } else {
@@ -187,6 +190,12 @@
 
   Viewer.prototype.setPointSize = function (size) {
     if (this.layers.map) this.layers.map.material.size = size;
+    this.render();
+  };
+
+  // Hides the map's points above z_m (a ceiling that hides the inside of a tunnel or a building).
+  Viewer.prototype.setHeightCut = function (z_m) {
+    if (this.heightCut) this.heightCut.constant = z_m;
     this.render();
   };
 

@@ -12,6 +12,7 @@ on the first failed check.
 
 usage: report_browser.py CHROMIUM REPORT_HTML [--map-points N] [--plot ID=ROWS ...]
                          [--trajectory NAME=COUNT ...] [--loops N] [--screenshot OUT.png]
+                         [--before-screenshot JS]
 """
 import argparse
 import base64
@@ -168,6 +169,8 @@ def main():
     parser.add_argument("--trajectory", action="append", default=[], help="NAME=COUNT: a drawn trajectory")
     parser.add_argument("--loops", type=int, help="loop closures drawn")
     parser.add_argument("--screenshot", help="also save the page's first screen here (PNG)")
+    parser.add_argument("--before-screenshot", default="true",
+                        help="JavaScript run before the screenshot (e.g. unimapReport.setHeightCut(0.8))")
     args = parser.parse_args()
 
     profile = tempfile.mkdtemp(prefix="unimap-chromium-")
@@ -227,6 +230,7 @@ def main():
             browser.evaluate("""(() => { const v = window.unimapReport.viewer;
               for (const name of Object.keys(v.layers)) v.setVisible(name, name !== 'odometry');
               window.scrollTo(0, 0); return true; })()""")
+            browser.evaluate(args.before_screenshot)
             with open(args.screenshot, "wb") as out:
                 out.write(base64.b64decode(browser.call("Page.captureScreenshot", {"format": "png"})["data"]))
             print("screenshot: " + args.screenshot)
