@@ -209,6 +209,22 @@ def main():
         if args.loops is not None and counts.get("loops", 0) != args.loops:
             fail("%s loop closures drawn, expected %d" % (counts.get("loops", 0), args.loops))
 
+        # Every colouring the page offers (height, and intensity or map error when the map has them).
+        modes = browser.evaluate("""(() => {
+          const select = document.querySelector('select[aria-label="colour map by"]');
+          if (!select) return [];
+          const used = [];
+          for (const option of select.options) {
+            if (option.disabled) continue;
+            select.value = option.value;
+            select.dispatchEvent(new Event('change'));
+            used.push(option.value);
+          }
+          select.value = 'height';
+          select.dispatchEvent(new Event('change'));
+          return used; })()""")
+        print("colourings: " + ", ".join(modes))
+
         # The map alone, scrolled to the top of the view: its pixels in a real screenshot.
         rect = browser.evaluate("""(() => {
           const v = window.unimapReport.viewer;

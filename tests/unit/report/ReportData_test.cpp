@@ -73,6 +73,21 @@ TEST_F(RunFolderTest, ATruthThatDoesNotOverlapIsANote) {
   EXPECT_NE(data.payload["notes"][0].get<std::string>().find("Not evaluated"), std::string::npos);
 }
 
+TEST_F(RunFolderTest, AMapWithIntensitiesCanBeColouredByThem) {
+  {
+    std::ofstream pcd(dir_ / "cloud.pcd");
+    pcd << "VERSION .7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\n"
+           "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA ascii\n0 0 0 5\n1 0 0 7\nnan 0 0 9\n";
+  }
+  MapLayerCounts counts;
+  const nlohmann::ordered_json layer = MapLayer(dir_ / "cloud.pcd", 100, std::nullopt, {}, &counts);
+  EXPECT_EQ(counts.total, 2u);  // the non-finite point dropped
+  EXPECT_TRUE(counts.intensity);
+  EXPECT_EQ(layer["intensity"], "AACgQAAA4EA=");  // 5.0f, 7.0f
+  EXPECT_TRUE(layer["error"].is_null());
+  EXPECT_EQ(layer["error_note"], "no true world (simulated data only)");
+}
+
 TEST_F(RunFolderTest, AMalformedLoopClosureLineNamesFileAndLine) {
   std::ofstream(dir_ / "loops.csv") << "# header\n1 2 3\n";
   try {
