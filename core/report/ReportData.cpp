@@ -70,8 +70,12 @@ Json EstimatePlots(const std::vector<StampedPose>& estimate, double t0, std::siz
 }
 
 std::string Title(const RunFolder& f) {
-  const std::string payload = f.run.value("payload", "");
-  std::string dataset = f.run.value("dataset", "");
+  const auto text = [&f](const char* key) {  // "" when absent or not a string
+    const auto it = f.run.find(key);
+    return it != f.run.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  const std::string payload = text("payload");
+  std::string dataset = text("dataset");
   while (!dataset.empty() && dataset.back() == '/') dataset.pop_back();
   if (payload.empty() && dataset.empty()) return "unimap report: " + f.folder.filename().string();
   return "unimap run: " + (payload.empty() ? "" : payload + " on ") +

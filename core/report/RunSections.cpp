@@ -107,10 +107,10 @@ Json Parameters(const Json& run) {
       continue;
     }
     out.push_back(Json{{"key", key},
-                       {"symbol", p.value("symbol", "")},
+                       {"symbol", p.contains("symbol") ? DisplayValue(p["symbol"]) : ""},
                        {"value", p.contains("value") ? DisplayValue(p["value"]) : ""},
-                       {"source", p.value("source", "")},
-                       {"meaning", p.value("meaning", "")}});
+                       {"source", p.contains("source") ? DisplayValue(p["source"]) : ""},
+                       {"meaning", p.contains("meaning") ? DisplayValue(p["meaning"]) : ""}});
   }
   return out;
 }

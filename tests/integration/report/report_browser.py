@@ -55,9 +55,12 @@ class Browser:
             os.dup2(self.chrome_in, 3)
             os.dup2(self.chrome_out, 4)
 
-        self.process = subprocess.Popen([chromium] + FLAGS + ["--user-data-dir=" + profile, "about:blank"],
-                                        preexec_fn=child_fds, close_fds=False, stdin=subprocess.DEVNULL,
-                                        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        # Chromium's own log goes to a file (a pipe nobody reads could fill and stall it).
+        self.log_file = os.path.join(profile, "chromium.log")
+        with open(self.log_file, "wb") as log:
+            self.process = subprocess.Popen([chromium] + FLAGS + ["--user-data-dir=" + profile, "about:blank"],
+                                            preexec_fn=child_fds, close_fds=False, stdin=subprocess.DEVNULL,
+                                            stdout=log, stderr=log)
         os.close(self.chrome_in)
         os.close(self.chrome_out)
         self.buffer = b""
@@ -67,6 +70,10 @@ class Browser:
         target = self.call("Target.createTarget", {"url": "about:blank"})["targetId"]
         self.session = self.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
 
+    def fail_with_log(self, what):
+        with open(self.log_file, "rb") as log:
+            fail(what + "; its log ends: " + log.read()[-2000:].decode(errors="replace"))
+
     def _read_message(self, deadline):
         while b"\0" not in self.buffer:
             left = deadline - time.time()
@@ -74,7 +81,7 @@ class Browser:
                 fail("Chromium did not answer in time")
             chunk = os.read(self.read_fd, 1 << 20)
             if not chunk:
-                fail("Chromium closed the DevTools pipe: " + self.process.stderr.read().decode(errors="replace")[-2000:])
+                self.fail_with_log("Chromium closed the DevTools pipe")
             self.buffer += chunk
         message, self.buffer = self.buffer.split(b"\0", 1)
         return json.loads(message)
@@ -84,7 +91,10 @@ class Browser:
         message = {"id": self.next_id, "method": method, "params": params or {}}
         if self.session:
             message["sessionId"] = self.session
-        os.write(self.write_fd, json.dumps(message).encode() + b"\0")
+        try:
+            os.write(self.write_fd, json.dumps(message).encode() + b"\0")
+        except BrokenPipeError:
+            self.fail_with_log("Chromium exited")
         deadline = time.time() + timeout_s
         while True:
             reply = self._read_message(deadline)
@@ -174,8 +184,9 @@ def main():
     args = parser.parse_args()
 
     profile = tempfile.mkdtemp(prefix="unimap-chromium-")
-    browser = Browser(args.chromium, profile)
+    browser = None
     try:
+        browser = Browser(args.chromium, profile)
         for domain in ("Runtime", "Log", "Page", "Network"):
             browser.call(domain + ".enable")
         browser.call("Emulation.setDeviceMetricsOverride",
@@ -251,7 +262,8 @@ def main():
                 out.write(base64.b64decode(browser.call("Page.captureScreenshot", {"format": "png"})["data"]))
             print("screenshot: " + args.screenshot)
     finally:
-        browser.close()
+        if browser:
+            browser.close()
         shutil.rmtree(profile, ignore_errors=True)
     print("PASS")
 

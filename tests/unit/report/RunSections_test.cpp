@@ -59,6 +59,17 @@ TEST(RunSectionsTest, ReadsAnyRunJsonGenerically) {
   EXPECT_EQ(s["cards"][2]["key"], "ate_rmse_m");
 }
 
+TEST(RunSectionsTest, ValuesOfUnexpectedTypesAreShownNotRejected) {
+  const Json run = Json::parse(R"({"payload": 3, "parameters": {"n": {"value": 4, "source": 7}, "m": "x"},
+                                  "messages": "not a list", "mapping": {"messages": [1, 2]}})");
+  const Json s = RunSections(run, Json::object());
+  EXPECT_EQ(s["parameters"][0]["source"], "7");
+  EXPECT_EQ(s["parameters"][1]["value"], "x");
+  EXPECT_EQ(s["cards"][0]["value"], "3");
+  EXPECT_TRUE(s["messages"].empty());
+  EXPECT_EQ(s["sections"][1]["rows"][0]["value"], "1 / 2");
+}
+
 TEST(RunSectionsTest, EmptyFilesGiveEmptyTables) {
   const Json s = RunSections(Json::object(), Json::object());
   EXPECT_TRUE(s["sections"].empty());
