@@ -75,11 +75,15 @@ std::string Title(const RunFolder& f) {
     return it != f.run.end() && it->is_string() ? it->get<std::string>() : std::string();
   };
   const std::string payload = text("payload");
-  std::string dataset = text("dataset");
-  while (!dataset.empty() && dataset.back() == '/') dataset.pop_back();
-  if (payload.empty() && dataset.empty()) return "unimap report: " + f.folder.filename().string();
-  return "unimap run: " + (payload.empty() ? "" : payload + " on ") +
-         std::filesystem::path(dataset).filename().string();
+  const std::string dataset = text("dataset");
+  // The last two parts of a path ("unimap-demo/data"): enough to tell runs apart.
+  const auto short_name = [](std::filesystem::path path) {
+    if (path.filename().empty()) path = path.parent_path();  // "out/"
+    const std::filesystem::path parent = path.parent_path().filename();
+    return parent.empty() || parent == "." ? path.filename().string() : (parent / path.filename()).string();
+  };
+  if (payload.empty() && dataset.empty()) return "unimap report: " + short_name(f.folder);
+  return "unimap run: " + (payload.empty() ? "" : payload + " on ") + short_name(dataset);
 }
 
 }  // namespace

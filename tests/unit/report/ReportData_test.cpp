@@ -32,7 +32,7 @@ TEST_F(RunFolderTest, HoldsThePlotsTrajectoriesAndABudgetOfTheMap) {
   EXPECT_EQ(data.counts.loop_closures, 2u);
 
   const nlohmann::ordered_json& p = data.payload;
-  EXPECT_EQ(p["title"], "unimap run: rotating_2d on data");
+  EXPECT_EQ(p["title"], "unimap run: rotating_2d on " + dir_.filename().string() + "/data");
   EXPECT_EQ(p["map"]["shown"], 250u);
   ASSERT_EQ(p["trajectories"].size(), 2u);  // estimate, truth
   EXPECT_EQ(p["trajectories"][1]["name"], "truth");
