@@ -10,7 +10,6 @@
 namespace unimap::eval {
 
 std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluation& evaluation,
-                                                         const ReportSources& sources,
                                                          const std::filesystem::path& out_dir,
                                                          const ReportExtras& extras) {
   std::error_code ec;
@@ -25,7 +24,6 @@ std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluat
   write("metrics.json", MetricsToJson(evaluation.metrics, extras.metrics));
   const std::vector<Figure> figures = RenderTrajectoryFigures(evaluation);
   for (const Figure& figure : figures) write(figure.file_name, figure.png);
-  write("report.html", RenderHtmlReport(evaluation.metrics, figures, sources, extras));
   return written;
 }
 

@@ -1,21 +1,24 @@
 #pragma once
-// Writes an evaluation's files: metrics.json, the PNG figures, report.html.
+// Writes an evaluation's files: metrics.json and the PNG figures (the
+// interactive report.html is core/report's).
 #include <filesystem>
 #include <vector>
 
-#include "eval/HtmlReport.hpp"
+#include "eval/MetricRows.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
 
 namespace unimap::eval {
 
+// Metrics an evaluation writes beyond the trajectory's (e.g. the map error).
+struct ReportExtras {
+  std::vector<ExtraMetric> metrics;  // appended to metrics.json, in order
+};
+
 // Creates out_dir if needed and writes metrics.json, trajectory_top.png,
-// trajectory_side.png, position_error.png, rotation_error.png and
-// report.html there, each atomically (temp file + rename). Returns the paths
-// written, in that order. Throws unimap::Error when a file cannot be written.
-// extras: what the report shows beyond the trajectory (e.g. the map error;
-// its metrics also go to metrics.json).
+// trajectory_side.png, position_error.png and rotation_error.png there,
+// each atomically (temp file + rename). Returns the paths written, in that
+// order. Throws unimap::Error when a file cannot be written.
 std::vector<std::filesystem::path> WriteEvaluationReport(const TrajectoryEvaluation& evaluation,
-                                                         const ReportSources& sources,
                                                          const std::filesystem::path& out_dir,
                                                          const ReportExtras& extras = {});
 

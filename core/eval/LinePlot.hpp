@@ -1,22 +1,31 @@
 #pragma once
 // A 2D line chart (axes, ticks with labels, grid, coloured series, legend,
-// title) rendered into a region of a PlotCanvas.
+// title) drawn with cairo (real fonts, anti-aliased lines) into a region of
+// a cairo context.
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "eval/PlotCanvas.hpp"
+typedef struct _cairo cairo_t;
 
 namespace unimap::eval {
 
 class LinePlot {
  public:
+  struct Color {
+    double r, g, b;  // 0..1
+  };
   // One polyline; non-finite points break it into pieces.
   struct Series {
     std::string name;                     // legend text
-    PlotCanvas::Color color;              // line colour
+    Color color;                          // line colour
     std::vector<Eigen::Vector2d> points;  // data coordinates, drawn in order
+    double width_px = 1.6;                // line width
+  };
+  // A region of the drawing, pixels.
+  struct Rect {
+    double x, y, width, height;
   };
 
   void SetTitle(std::string title) { title_ = std::move(title); }
@@ -24,13 +33,19 @@ class LinePlot {
   void SetYLabel(std::string label) { y_label_ = std::move(label); }
   // Same metres per pixel on both axes (trajectory views).
   void SetEqualAspect(bool equal) { equal_aspect_ = equal; }
+  // Series are drawn in the order added (later ones on top).
   void AddSeries(Series series) { series_.push_back(std::move(series)); }
 
   // Draws everything inside area (legend in the plot corner covering the
-  // fewest points). Axis ranges cover every finite point with a
-  // 5 % margin (a zero-width range becomes +-1 around its value); ticks are
-  // 1, 2 or 5 x 10^k apart.
-  void Render(PlotCanvas* canvas, const PlotCanvas::Rect& area) const;
+  // fewest points). Axis ranges cover every finite point with a 5 % margin
+  // (a zero-width range becomes +-1 around its value); ticks are 1, 2 or 5
+  // x 10^k apart.
+  void Render(cairo_t* cr, const Rect& area) const;
+
+  // The height an area of the given width needs so that, at equal scale,
+  // the data fits it with the least empty space, within [min_height,
+  // max_height] (title, labels and margins included).
+  double FittedHeight(double width, double min_height, double max_height) const;
 
   // Tick values of a nice axis over [lo, hi] with about target ticks; the
   // range is widened to whole steps. step receives the spacing.

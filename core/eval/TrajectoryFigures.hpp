@@ -14,10 +14,12 @@ struct Figure {
   std::string png;        // PNG file bytes
 };
 
-// Renders, in this order: trajectory_top.png (x-y, equal scales, 1000 x 800)
-// and trajectory_side.png (x-z, z stretched, 1000 x 500) with the truth, the start-anchored and the ATE-aligned estimate;
-// position_error.png (x, y, z panels) and rotation_error.png (roll, pitch,
-// yaw panels), 1000 x 990 each, over time since the first associated pose, start-anchored.
+// Renders with cairo, in this order: trajectory_top.png (x-y) and
+// trajectory_side.png (x-z), equal scales, 1000 wide and as high as the data
+// needs (320 to 900), with the truth (drawn widest, underneath), the
+// start-anchored and the ATE-aligned estimate; position_error.png (x, y, z
+// panels) and rotation_error.png (roll, pitch, yaw panels), 1000 x 900 each,
+// over time since the first associated pose, start-anchored.
 std::vector<Figure> RenderTrajectoryFigures(const TrajectoryEvaluation& evaluation);
 
 }  // namespace unimap::eval

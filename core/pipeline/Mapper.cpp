@@ -81,6 +81,7 @@ void Mapper::OnKeyScan(KeyScan&& key) {
     const Eigen::Isometry3d T_world_body = graph_.T_world_local() * key.T_local_body;
     for (const LoopClosure& closure : finder_.Search(k, points_body, T_world_body, path_m_, graph_)) {
       graph_.AddLoopClosure(closure);
+      closures_.push_back({key.time_s, k, closure.submap_id});
       if (!any_closure_) stats_.first_loop_closure_time_s = key.time_s;
       any_closure_ = true;
     }
@@ -134,6 +135,16 @@ StageTimes Mapper::Times() const {
   times.loop_search_s = stats_.loop_search_s;
   times.optimisation_s = stats_.optimisation_s;
   return times;
+}
+
+std::vector<LoopClosureLink> Mapper::LoopClosureLinks() const {
+  std::vector<LoopClosureLink> links;
+  for (const AcceptedClosure& c : closures_) {
+    Eigen::Isometry3d T_world_submap = Eigen::Isometry3d::Identity();
+    if (!graph_.T_world_submap(c.submap_id, &T_world_submap)) continue;
+    links.push_back({c.time_s, graph_.T_world_key(c.key_scan).translation(), T_world_submap.translation()});
+  }
+  return links;
 }
 
 MapperStats Mapper::stats() const {

@@ -32,6 +32,14 @@ struct MapperStats {
   std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
 };
 
+// An accepted loop closure, for drawing: where the closing 3D scan was and
+// the origin of the older submap it matched (world frame, optimised poses).
+struct LoopClosureLink {
+  double time_s = 0.0;                                  // the closing 3D scan's time
+  Eigen::Vector3d scan_world = Eigen::Vector3d::Zero();    // its body position
+  Eigen::Vector3d submap_world = Eigen::Vector3d::Zero();  // the matched submap's origin
+};
+
 // The paper's full system (DESIGN.md 1): wires the Localizer (plugin ->
 // deskew -> GPF -> ESKF), the SubmapManager it matches against and inserts
 // into, the TrajectoryGraph (a node per 3D scan and per submap), the
@@ -65,6 +73,8 @@ class Mapper : public EventSink {
   // Where the time went: the localiser's and its map's stages, loop search, optimisation.
   StageTimes Times() const;
   MapperStats stats() const;
+  // Every accepted loop closure, in acceptance order.
+  std::vector<LoopClosureLink> LoopClosureLinks() const;
 
  private:
   void OnKeyScan(KeyScan&& key);
@@ -82,6 +92,12 @@ class Mapper : public EventSink {
   double path_m_ = 0.0;                                     // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;
+  struct AcceptedClosure {
+    double time_s;
+    int key_scan;
+    int submap_id;
+  };
+  std::vector<AcceptedClosure> closures_;                   // for LoopClosureLinks
   MapperStats stats_;
   std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above
 };

@@ -20,6 +20,8 @@ void AddRunCommand(CLI::App* app);
 void AddLocalizeCommand(CLI::App* app);
 // `unimap bench`: speed figures written to docs/benchmarks.md.
 void AddBenchCommand(CLI::App* app);
+// `unimap report RUN_DIR`: the run folder's report.html, rebuilt from its outputs.
+void AddReportCommand(CLI::App* app);
 // `unimap demo`: simulate the paper's tunnel, map it, compare with the paper.
 void AddDemoCommand(CLI::App* app);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Commands.hpp"
+#include "FolderReport.hpp"
 #include "MapEvaluation.hpp"
 #include "TextTable.hpp"
 #include "eval/EvaluationReport.hpp"
@@ -95,9 +96,17 @@ int RunEvaluate(const EvaluateOptions& options) {
     for (const eval::ExtraMetric& m : map_extras.metrics) table.AddRow({m.row.key, m.row.value, m.row.meaning});
     table.Print(std::cout);
     const std::vector<std::filesystem::path> written =
-        eval::WriteEvaluationReport(evaluation, {options.estimate_file, options.truth_file}, out_dir, map_extras);
+        eval::WriteEvaluationReport(evaluation, out_dir, map_extras);
+    report::ReportOptions report_options;
+    report_options.folder = out_dir;
+    report_options.estimate_file = options.estimate_file;
+    report_options.truth_file = options.truth_file;
+    report_options.map_file = options.map_file;
+    report_options.evaluation = eval_options;
+    const report::ReportResult report = WriteFolderReport(report_options, world_file ? world_file->string() : "");
     std::cout << "\nwrote:\n";
     for (const auto& file : written) std::cout << "  " << file.string() << '\n';
+    std::cout << "  " << report.file.string() << '\n';
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';
@@ -112,7 +121,7 @@ void AddEvaluateCommand(CLI::App* app) {
   CLI::App* cmd = app->add_subcommand(
       "evaluate",
       "Compare an estimated trajectory with ground truth (and a map with the simulated world): metrics.json, "
-      "PNG plots, report.html");
+      "PNG plots, report.html (interactive: unimap report)");
   cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")
       ->required();
   cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM)")->required();

@@ -110,7 +110,6 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
 eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation) {
   eval::ReportExtras extras;
   extras.metrics = Metrics(evaluation);
-  extras.sources = {{"Map", evaluation.map_file.string()}, {"World (true surfaces)", evaluation.world_file.string()}};
   return extras;
 }
 

@@ -11,7 +11,7 @@
 
 #include "World.hpp"
 #include "eval/MapError.hpp"
-#include "eval/HtmlReport.hpp"
+#include "eval/EvaluationReport.hpp"
 #include "eval/MetricRows.hpp"
 
 namespace unimap::cli {
@@ -55,8 +55,7 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
 // order: map_error_mean_m, map_error_p95_m, map_error_max_m, map_points,
 // map_error_aligned_mean_m, map_error_aligned_p95_m, map_error_aligned_max_m
 // (full precision in metrics.json, the aligned ones null when absent; rows
-// with 4 decimals, "n/a" for an absent aligned variant). Sources: the map
-// and the world file.
+// with 4 decimals, "n/a" for an absent aligned variant).
 eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation);
 
 }  // namespace unimap::cli

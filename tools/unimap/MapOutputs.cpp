@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <cstdio>
+
 #include <octomap/OcTree.h>
 
+#include "eval/AtomicFile.hpp"
 #include "eval/TrajectoryErrors.hpp"
 #include "io/KittiTrajectoryWriter.hpp"
 #include "io/PcdWriter.hpp"
@@ -36,6 +39,18 @@ PositionErrorAt ErrorsAt(const Eigen::Isometry3d& T_truth_estimate, const Stampe
   return {std::abs(d.z()), d.norm()};
 }
 
+// One line per closure (the report draws them): time, scan position, submap origin.
+void WriteLoopClosures(const std::filesystem::path& file, const std::vector<pipeline::LoopClosureLink>& links) {
+  std::string text = "# time_s scan_x scan_y scan_z submap_x submap_y submap_z (map frame, m)\n";
+  char line[256];
+  for (const pipeline::LoopClosureLink& l : links) {
+    std::snprintf(line, sizeof(line), "%.6f %.4f %.4f %.4f %.4f %.4f %.4f\n", l.time_s, l.scan_world.x(),
+                  l.scan_world.y(), l.scan_world.z(), l.submap_world.x(), l.submap_world.y(), l.submap_world.z());
+    text += line;
+  }
+  eval::WriteFileAtomically(file, text);
+}
+
 JsonObject ErrorsJson(const PositionErrorAt& e) {
   JsonObject o;
   o.Add("height_error_m", e.height_error_m);
@@ -57,6 +72,7 @@ JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline:
   octomap::OcTree tree(options.octree_resolution_m);
   for (const Eigen::Vector3f& p : points) tree.updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);
   map::WriteOctomapBinary(out_dir / "map.bt", tree);
+  WriteLoopClosures(out_dir / "loop_closures.csv", mapper.LoopClosureLinks());
 
   const pipeline::MapperStats s = mapper.stats();
   JsonObject o;

@@ -18,7 +18,8 @@ struct MapOutputOptions {
 };
 
 // Writes out_dir/trajectory.tum and trajectory_kitti.txt (the optimised
-// trajectory), map.pcd, map.ply and map.bt, each atomically; returns the
+// trajectory), map.pcd, map.ply, map.bt and loop_closures.csv (each accepted
+// closure: time, the 3D scan's position, the matched submap's origin), each atomically; returns the
 // mapper's counts and the file names as run.json's "mapping" object.
 // Throws unimap::Error when a file cannot be written.
 JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,

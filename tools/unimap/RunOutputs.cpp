@@ -2,7 +2,10 @@
 
 #include <optional>
 
+#include "CommandLine.hpp"
+#include "FolderReport.hpp"
 #include "MapEvaluation.hpp"
+#include "PlatformJson.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -159,6 +162,8 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     run.Add("motion_reason", in.motion_reason);
   }
   run.Add("localizer", LocalizerStatsJson(in.stats));
+  run.Add("command", CommandLine());                                // the report's source of options
+  run.Add("parameters", PlatformParametersJson(in.platform_file));  // effective values and their sources
   for (const auto& [key, object] : in.extras) run.Add(key, object);
   // The truth and the estimate, read once for every evaluation below.
   std::vector<StampedPose> truth;
@@ -211,7 +216,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
       map_extras =
           MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source));
     }
-    eval::WriteEvaluationReport(evaluation, {trajectory.string(), truth_file.string()}, out, map_extras);
+    eval::WriteEvaluationReport(evaluation, out, map_extras);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       std::cout << "  " << row.key << " = " << row.value << '\n';
     }
@@ -219,6 +224,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
       std::cout << "  " << m.row.key << " = " << m.row.value << '\n';
     }
   }
+  WriteRunReportOrWarn(out);
   std::cout << "wrote " << trajectory.string() << ", " << (out / "run.json").string() << '\n';
   if (!summary.error.empty()) {
     std::cerr << "error: " << in.data_dir << ": " << summary.error << " (outputs hold what was processed)\n";

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "CommandLine.hpp"
 #include "Commands.hpp"
 #include "unimap/Version.hpp"
 
@@ -20,6 +21,8 @@ int main(int argc, char** argv) {
   unimap::cli::AddConvertCommand(&app);
   unimap::cli::AddBenchCommand(&app);
   unimap::cli::AddDemoCommand(&app);
+  unimap::cli::AddReportCommand(&app);
+  unimap::cli::SetCommandLine(argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -22,7 +22,7 @@ case $case_name in
   help_lists_subcommands)
     code=$(run --help); [ "$code" = 0 ] || fail "exit $code"
     listed=$(sed -n '/^Subcommands:/,$p' "$work/$case_name.out" | grep -E '^  [a-z]' | awk '{print $1}' | sort | tr '\n' ' ')
-    expected="bench config convert demo evaluate localize plugins run simulate "
+    expected="bench config convert demo evaluate localize plugins report run simulate "
     [ "$listed" = "$expected" ] || fail "listed subcommands '$listed', expected '$expected'"
     for sub in $listed; do
       "$exe" "$sub" --help >"$work/$case_name.$sub.out" 2>&1 || fail "'$sub --help' failed"
@@ -66,7 +66,7 @@ case $case_name in
     for key in map_error_mean_m map_error_p95_m map_error_max_m map_error_aligned_mean_m map_error_aligned_p95_m \
                map_error_aligned_max_m; do
       grep -Eq "^  \"$key\": [0-9.e-]+,?$" "$out/metrics.json" || fail "metrics.json lacks a number for $key"
-      grep -q "<code>$key</code>" "$out/report.html" || fail "report.html lacks $key"
+      grep -q "\"key\":\"$key\"" "$out/report.html" || fail "report.html lacks $key"
     done
     grep -Eq '^  "map_points": 4,?$' "$out/metrics.json" || fail "metrics.json: map_points is not 4"
     if command -v python3 >/dev/null; then

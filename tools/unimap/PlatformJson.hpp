@@ -1,0 +1,15 @@
+#pragma once
+// A platform's effective parameters for run.json, so that the report can say
+// what every parameter was and where it came from.
+#include <string>
+
+#include "JsonObject.hpp"
+
+namespace unimap::cli {
+
+// {"<key>": {"value", "symbol", "source" ("plugin default" or "FILE:LINE"),
+// "meaning"}, ...} in the plugin's order, from LoadPlatform(platform_file).
+// Throws ConfigError as LoadPlatform does.
+JsonObject PlatformParametersJson(const std::string& platform_file);
+
+}  // namespace unimap::cli
