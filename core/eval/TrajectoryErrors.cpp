@@ -35,6 +35,7 @@ TrajectoryErrors ComputeTrajectoryErrors(const TrajectoryAssociation& associatio
 
   // T_true_est: places the estimate's first pose on the truth's (see Anchor).
   const Eigen::Isometry3d T_true_est = AnchorTransform(pairs.front().T_true_body, pairs.front().T_est_body, anchor);
+  errors.T_true_est_anchor = T_true_est;
   errors.poses.reserve(pairs.size());
   double distance_m = 0.0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {

@@ -39,6 +39,7 @@ struct PoseError {
 struct TrajectoryErrors {
   std::vector<PoseError> poses;  // one per associated pair, same order
   RigidAlignment alignment;      // estimate positions onto truth positions (ATE)
+  Eigen::Isometry3d T_true_est_anchor = Eigen::Isometry3d::Identity();  // the start anchor (AnchorTransform)
   std::optional<SimilarityAlignment> similarity;  // the same with scale (empty: no positive scale)
 };
 

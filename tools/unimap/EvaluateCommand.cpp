@@ -70,7 +70,8 @@ int RunEvaluate(const EvaluateOptions& options) {
     const std::optional<std::filesystem::path> world_file =
         ResolveWorldFile(options.world_file, options.truth_file);
     if (!options.map_file.empty() && world_file) {
-      map_evaluation = EvaluateMapFile(options.map_file, *world_file, evaluation.errors.alignment.T_target_source);
+      map_evaluation = EvaluateMapFile(options.map_file, *world_file, evaluation.errors.alignment.T_target_source,
+                                       evaluation.errors.T_true_est_anchor);
     } else if (!options.map_file.empty()) {
       std::cerr << "note: no world file (--world, or world.yaml beside " << options.truth_file
                 << "): map error not computed\n";

@@ -24,12 +24,16 @@ std::string Lowercase(std::string text) {
 // Every map metric: its full-precision JSON value and its (key, display value, meaning) row.
 std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
   const eval::MapErrorStats& u = e.unaligned;
-  const auto aligned = [&](double eval::MapErrorStats::*field) {
-    return e.aligned ? eval::JsonNumber((*e.aligned).*field) : std::string("null");
+  const auto value = [](const std::optional<eval::MapErrorStats>& stats, double eval::MapErrorStats::*field) {
+    return stats ? eval::JsonNumber((*stats).*field) : std::string("null");
   };
-  const auto aligned_shown = [&](double eval::MapErrorStats::*field) {
-    return e.aligned ? Fixed((*e.aligned).*field, 4) : std::string("n/a");
+  const auto shown = [](const std::optional<eval::MapErrorStats>& stats, double eval::MapErrorStats::*field) {
+    return stats ? Fixed((*stats).*field, 4) : std::string("n/a");
   };
+  const auto aligned = [&](double eval::MapErrorStats::*field) { return value(e.aligned, field); };
+  const auto aligned_shown = [&](double eval::MapErrorStats::*field) { return shown(e.aligned, field); };
+  const auto anchored = [&](double eval::MapErrorStats::*field) { return value(e.anchored, field); };
+  const auto anchored_shown = [&](double eval::MapErrorStats::*field) { return shown(e.anchored, field); };
   using S = eval::MapErrorStats;
   return {
       {eval::JsonNumber(u.mean_m),
@@ -41,6 +45,11 @@ std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
        {"map_error_aligned_mean_m", aligned_shown(&S::mean_m), "mean distance after moving the map by the ATE alignment, m"}},
       {aligned(&S::p95_m), {"map_error_aligned_p95_m", aligned_shown(&S::p95_m), "95th percentile after the ATE alignment, m"}},
       {aligned(&S::max_m), {"map_error_aligned_max_m", aligned_shown(&S::max_m), "largest distance after the ATE alignment, m"}},
+      {anchored(&S::mean_m),
+       {"map_error_anchored_mean_m", anchored_shown(&S::mean_m),
+        "mean distance after moving the map by the start anchor (first poses made to coincide), m"}},
+      {anchored(&S::p95_m), {"map_error_anchored_p95_m", anchored_shown(&S::p95_m), "95th percentile after the start anchor, m"}},
+      {anchored(&S::max_m), {"map_error_anchored_max_m", anchored_shown(&S::max_m), "largest distance after the start anchor, m"}},
   };
 }
 
@@ -86,7 +95,8 @@ std::optional<std::filesystem::path> ResolveWorldFile(const std::string& world_o
 }
 
 MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::filesystem::path& world_file,
-                              const std::optional<Eigen::Isometry3d>& T_world_map) {
+                              const std::optional<Eigen::Isometry3d>& T_world_map,
+                              const std::optional<Eigen::Isometry3d>& T_world_map_anchor) {
   const sim::World world = LoadWorldFile(world_file);
   if (world.size() == 0) throw InputError("world " + world_file.string() + ": has no primitives");
   std::vector<Eigen::Vector3f> points_map = LoadMapPoints(map_file);
@@ -96,11 +106,15 @@ MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::
   result.world_file = world_file;
   try {
     result.unaligned = eval::ComputeMapError(points_map, distance);
-    if (T_world_map) {
-      const Eigen::Isometry3f T = T_world_map->cast<float>();
-      for (Eigen::Vector3f& p : points_map) p = T * p;  // p_world = T_world_map p_map
-      result.aligned = eval::ComputeMapError(points_map, distance);
-    }
+    // The map moved by a transform: p_world = T_world_map p_map.
+    const auto moved = [&](const Eigen::Isometry3d& T_world_map_d) {
+      const Eigen::Isometry3f T = T_world_map_d.cast<float>();
+      std::vector<Eigen::Vector3f> points_world(points_map.size());
+      for (std::size_t i = 0; i < points_map.size(); ++i) points_world[i] = T * points_map[i];
+      return eval::ComputeMapError(points_world, distance);
+    };
+    if (T_world_map) result.aligned = moved(*T_world_map);
+    if (T_world_map_anchor) result.anchored = moved(*T_world_map_anchor);
   } catch (const InputError& e) {
     throw InputError("map " + map_file.string() + ": " + e.what());
   }

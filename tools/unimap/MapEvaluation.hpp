@@ -25,6 +25,11 @@ struct MapEvaluation {
   // eval::TrajectoryErrors::alignment.T_target_source); empty when no
   // transform was given.
   std::optional<eval::MapErrorStats> aligned;
+  // Points moved by the trajectory's start anchor (the first estimated pose
+  // placed on the first true one, eval::TrajectoryErrors::T_true_est_anchor):
+  // well defined also for short or straight trajectories, whose ATE
+  // alignment leaves a rotation free; empty when no anchor was given.
+  std::optional<eval::MapErrorStats> anchored;
 };
 
 // The map's points: .ply through io::ReadPlyVertices, .pcd through
@@ -49,13 +54,15 @@ std::optional<std::filesystem::path> ResolveWorldFile(const std::string& world_o
 // map that cannot be read, is empty or holds a non-finite point, for an
 // empty world, and ConfigError for an invalid world file.
 MapEvaluation EvaluateMapFile(const std::filesystem::path& map_file, const std::filesystem::path& world_file,
-                              const std::optional<Eigen::Isometry3d>& T_world_map = std::nullopt);
+                              const std::optional<Eigen::Isometry3d>& T_world_map = std::nullopt,
+                              const std::optional<Eigen::Isometry3d>& T_world_map_anchor = std::nullopt);
 
 // The map metrics and files for eval::WriteEvaluationReport. Metrics in
 // order: map_error_mean_m, map_error_p95_m, map_error_max_m, map_points,
-// map_error_aligned_mean_m, map_error_aligned_p95_m, map_error_aligned_max_m
-// (full precision in metrics.json, the aligned ones null when absent; rows
-// with 4 decimals, "n/a" for an absent aligned variant).
+// map_error_aligned_mean_m, map_error_aligned_p95_m, map_error_aligned_max_m,
+// map_error_anchored_mean_m, map_error_anchored_p95_m, map_error_anchored_max_m
+// (full precision in metrics.json, the aligned and anchored ones null when
+// absent; rows with 4 decimals, "n/a" for an absent variant).
 eval::ReportExtras MapReportExtras(const MapEvaluation& evaluation);
 
 }  // namespace unimap::cli

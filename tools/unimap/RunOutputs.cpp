@@ -214,7 +214,8 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     const std::optional<std::filesystem::path> world = ResolveWorldFile("", truth_file);
     if (!in.map_file.empty() && world) {
       map_extras =
-          MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source));
+          MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source,
+                                          evaluation.errors.T_true_est_anchor));
     }
     eval::WriteEvaluationReport(evaluation, out, map_extras);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {

@@ -29,11 +29,12 @@ case $case_name in
     done
     [ "$(json_number "$work/out/run.json" key_scans)" = 30 ] || fail "key_scans is not 30 (1200 lines / N = 40)"
     ate=$(json_number "$work/out/metrics.json" ate_rmse_m)
-    map=$(json_number "$work/out/metrics.json" map_error_aligned_mean_m)
-    echo "ate_rmse_m=$ate map_error_aligned_mean_m=$map"
-    # Measured on this deterministic run (at 42cca96): ATE 0.018 m, map error 0.023 m.
+    # The 30 s are a straight climb: the ATE alignment leaves the rotation
+    # about it free, so the map is placed by the start anchor instead.
+    map=$(json_number "$work/out/metrics.json" map_error_anchored_mean_m)
+    echo "ate_rmse_m=$ate map_error_anchored_mean_m=$map"
     below "$ate" 0.1 || fail "ate_rmse_m $ate is not below 0.1 m"
-    below "$map" 0.05 || fail "map_error_aligned_mean_m $map is not below 0.05 m" ;;
+    below "$map" 0.05 || fail "map_error_anchored_mean_m $map is not below 0.05 m" ;;
   plane_matching_static)
     # The rotating Hokuyo standing still for the first 8 s of the hallway,
     # its motor at 31.7 rpm so that line azimuths do not repeat: each line
