@@ -5,10 +5,12 @@
 namespace unimap::estimation {
 
 // Constant-velocity motion prior: the body keeps the linear and angular
-// velocity (body frame) of its last two localised poses; before two poses
-// are known it stands still. The uncertainty grows linearly with the
-// prediction time: sigma_p = velocity_sigma_m_s dt, sigma_theta =
-// rate_sigma_rad_s dt.
+// velocity (body frame) of its last two localised poses. The uncertainty
+// grows linearly with the prediction time: sigma_p = velocity_sigma_m_s dt,
+// sigma_theta = rate_sigma_rad_s dt. Before two poses are known the velocity
+// is unknown: the prediction stands still with sigma_p = max_speed_m_s dt and
+// sigma_theta = max_rate_rad_s dt (a sensor may already be moving; the
+// localiser then searches wide, pipeline::Reacquirer).
 class ConstantVelocityPrior final : public MotionPrior {
  public:
   explicit ConstantVelocityPrior(const MotionPriorOptions& options);

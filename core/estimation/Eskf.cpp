@@ -1,6 +1,7 @@
 #include "estimation/Eskf.hpp"
 
 #include <cassert>
+#include <cmath>
 #include <stdexcept>
 
 #include "estimation/So3.hpp"
@@ -169,6 +170,20 @@ void Eskf::PredictPose(double time_s, const Eigen::Isometry3d& T_prev_next, cons
   state_.v_world_m_s = dt > 0.0 ? Eigen::Vector3d(R * dp / dt) : Eigen::Vector3d::Zero();
   state_.q_world_body = (state_.q_world_body * Eigen::Quaterniond(dR)).normalized();
   state_.time_s = time_s;
+}
+
+void Eskf::SetImuNoise(double sigma_accel_m_s2, double sigma_gyro_rad_s) {
+  if (!(sigma_accel_m_s2 > 0.0) || !(sigma_gyro_rad_s > 0.0)) throw std::invalid_argument("Eskf: IMU sigmas must be > 0");
+  options_.sigma_accel_m_s2 = sigma_accel_m_s2;
+  options_.sigma_gyro_rad_s = sigma_gyro_rad_s;
+}
+
+void Eskf::InflateMotionCovariance(double factor) {
+  if (!(factor > 1.0) || !std::isfinite(factor)) return;
+  const double s = std::sqrt(factor);
+  Eigen::Matrix<double, 15, 1> scale = Eigen::Matrix<double, 15, 1>::Ones();
+  scale.segment<9>(error_index::kP).setConstant(s);  // p, v, theta
+  P_ = scale.asDiagonal() * P_ * scale.asDiagonal();
 }
 
 Matrix6d Eskf::PoseCovariance() const {

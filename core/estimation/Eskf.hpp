@@ -60,6 +60,15 @@ class Eskf {
   // [dp, dtheta] (dtheta local): z = [p_z - p, Log(q^-1 q_z)].
   PoseUpdateResult UpdatePose(const Eigen::Isometry3d& T_world_body_measured, const Matrix6d& R);
 
+  // Scales the position, velocity and attitude uncertainty (and their
+  // correlations) by factor >= 1, biases unchanged: the prediction proved
+  // worse than the filter believed (pipeline::Reacquirer), so the next
+  // update may move the state as far as the evidence says.
+  void InflateMotionCovariance(double factor);
+  // Replaces the IMU's white noise (options().sigma_accel_m_s2 and
+  // sigma_gyro_rad_s; both > 0) for the predictions from now on.
+  void SetImuNoise(double sigma_accel_m_s2, double sigma_gyro_rad_s);
+
   const NavState& state() const { return state_; }
   const ErrorCovariance& covariance() const { return P_; }
   // Marginal covariance of [dp, dtheta].

@@ -21,8 +21,12 @@ struct MotionPriorOptions {
   double odometry_min_sigma_m = 0.005;           // wheel odometry: position sigma floor per step (m)
   double odometry_min_sigma_rad = 0.002;         // wheel odometry: rotation sigma floor per step (rad)
   double max_odometry_gap_s = 0.5;               // an odometry gap longer than this around a scan: no prediction
-  double velocity_sigma_m_s = 0.3;               // constant velocity: unmodelled velocity change (m/s)
+  double velocity_sigma_m_s = 1.0;               // constant velocity: unmodelled velocity change (m/s; 1 m/s
+                                                 // per 0.1 s sweep is a car braking or speeding up at 1 g)
   double rate_sigma_rad_s = 0.2;                 // constant velocity: unmodelled angular-rate change (rad/s)
+  double max_speed_m_s = 15.0;                   // constant velocity, before a velocity is known: the fastest
+                                                 // expected speed, the prediction's spread (m/s)
+  double max_rate_rad_s = 1.0;                   // ... and turn rate (rad/s)
 
   // True when every field is in range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const;

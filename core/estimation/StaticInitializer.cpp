@@ -31,6 +31,8 @@ StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
   }
   const Eigen::Vector3d std_a = (var_a / n).cwiseSqrt();
   const Eigen::Vector3d std_w = (var_w / n).cwiseSqrt();
+  out.accel_std_m_s2 = std::sqrt(var_a.sum() / (3.0 * n));
+  out.gyro_std_rad_s = std::sqrt(var_w.sum() / (3.0 * n));
   if (std_a.maxCoeff() > options.max_accel_std_m_s2 || std_w.maxCoeff() > options.max_gyro_std_rad_s) {
     out.reason = "IMU not static: accelerometer std " + std::to_string(std_a.maxCoeff()) +
                  " m/s^2, gyroscope std " + std::to_string(std_w.maxCoeff()) + " rad/s";

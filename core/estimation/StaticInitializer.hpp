@@ -17,6 +17,8 @@ struct StaticAlignment {
   Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();           // mean angular rate
   double gravity_m_s2 = 0.0;       // measured specific-force magnitude
   Eigen::Vector3d mean_specific_force_m_s2 = Eigen::Vector3d::Zero();  // mean accelerometer reading (body)
+  double accel_std_m_s2 = 0.0;     // accelerometer scatter at rest: the root mean of the axes' variances
+  double gyro_std_rad_s = 0.0;     // gyroscope scatter at rest, the same (white noise per sample)
 };
 
 // Thresholds for accepting an IMU window as static.

@@ -151,6 +151,30 @@ void DistanceField::StoreBlocks(const std::vector<std::uint16_t>& cells) {
   }
 }
 
+void DistanceField::ForEachCellWithin(float max_distance_m,
+                                      const std::function<void(const Eigen::Vector3i&)>& visit) const {
+  for (int bx = 0; bx < block_dims_.x(); ++bx) {
+    for (int by = 0; by < block_dims_.y(); ++by) {
+      for (int bz = 0; bz < block_dims_.z(); ++bz) {
+        const Block* block = blocks_[static_cast<std::size_t>(bx) * block_stride_x_ +
+                                     static_cast<std::size_t>(by) * block_stride_y_ + static_cast<std::size_t>(bz)]
+                                 .get();
+        if (block == nullptr) continue;
+        for (int x = 0; x < kBlockEdge; ++x) {
+          for (int y = 0; y < kBlockEdge; ++y) {
+            for (int z = 0; z < kBlockEdge; ++z) {
+              const Eigen::Vector3i cell(bx * kBlockEdge + x, by * kBlockEdge + y, bz * kBlockEdge + z);
+              if ((cell.array() >= dims_.array()).any()) continue;
+              const std::uint16_t code = (*block)[static_cast<std::size_t>(BlockOffset(x, y, z))];
+              if (std::abs(static_cast<float>(code >> shift_) * step_m_ - offset_m_) <= max_distance_m) visit(cell);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 std::size_t DistanceField::StoredBlocks() const {
   return static_cast<std::size_t>(
       std::count_if(blocks_.begin(), blocks_.end(), [](const auto& block) { return block != nullptr; }));

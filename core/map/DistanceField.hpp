@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -146,6 +147,9 @@ class DistanceField {
   }
   // Blocks stored (holding a cell below the clamp).
   std::size_t StoredBlocks() const;
+  // Calls visit(cell) for every cell of the box whose distance is at most
+  // max_distance_m (< clamp()), block by block.
+  void ForEachCellWithin(float max_distance_m, const std::function<void(const Eigen::Vector3i&)>& visit) const;
   std::size_t MemoryBytes() const {
     return StoredBlocks() * kBlockCells * sizeof(std::uint16_t) +
            blocks_.size() * sizeof(std::shared_ptr<const Block>) + planes_.MemoryBytes();

@@ -18,6 +18,20 @@
 namespace unimap::matching {
 namespace {
 
+// Gauss-Newton steps of MatchFrom at least (it has no particles to start from).
+constexpr int kMinRefineFromIterations = 5;
+
+// The 6-D prior of the active dimensions' covariance S (unit variance elsewhere).
+Matrix6d FullPrior(const Eigen::MatrixXd& S, const std::vector<int>& dims) {
+  Matrix6d prior = Matrix6d::Identity();
+  for (std::size_t r = 0; r < dims.size(); ++r) {
+    for (std::size_t c = 0; c < dims.size(); ++c) {
+      prior(dims[r], dims[c]) = S(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
+    }
+  }
+  return prior;
+}
+
 // Dimensions sampled: all six, or x, y, yaw for planar motion.
 std::vector<int> ActiveDims(bool planar) {
   return planar ? std::vector<int>{0, 1, 5} : std::vector<int>{0, 1, 2, 3, 4, 5};
@@ -92,7 +106,26 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
                                         const Matrix6d& predicted_covariance,
                                         const std::vector<Eigen::Vector3f>& points_body,
                                         const DistanceQuery& field, double max_predicted_distance_m) {
+  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m, nullptr);
+}
+
+GpfResult GaussianParticleFilter::MatchFrom(const Eigen::Isometry3d& T_map_body_predicted,
+                                            const Matrix6d& predicted_covariance,
+                                            const std::vector<Eigen::Vector3f>& points_body,
+                                            const DistanceQuery& field, double max_predicted_distance_m,
+                                            const Vector6d& start) {
+  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m, &start);
+}
+
+GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_predicted,
+                                            const Matrix6d& predicted_covariance,
+                                            const std::vector<Eigen::Vector3f>& points_body,
+                                            const DistanceQuery& field, double max_predicted_distance_m,
+                                            const Vector6d* start) {
   GpfResult result;
+  // Where the points are looked up before matching: the prediction, or the start given.
+  const Eigen::Isometry3d T_map_body_gate =
+      start != nullptr ? estimation::ApplyPoseError(T_map_body_predicted, *start) : T_map_body_predicted;
   const auto downsample_start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector3f> points =
       VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
@@ -101,14 +134,14 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
   ++scans_matched_;
   result.points_used = static_cast<int>(points.size());
   std::vector<PlanePoint> plane_points;
-  if (options_.point_to_plane) plane_points = TieToPlanes(T_map_body_predicted, field, &points);
+  if (options_.point_to_plane) plane_points = TieToPlanes(T_map_body_gate, field, &points);
   int unmeasured = 0;  // planes_only: the points left without a plane
   if (options_.planes_only) {
     unmeasured = static_cast<int>(points.size());
     points.clear();
   }
   if (max_predicted_distance_m > 0.0 && !points.empty()) {
-    result.points_unseen = DropUnseen(T_map_body_predicted, field, max_predicted_distance_m, &points);
+    result.points_unseen = DropUnseen(T_map_body_gate, field, max_predicted_distance_m, &points);
     unmeasured += result.points_unseen;
   }
   if (points.empty() && plane_points.empty()) {
@@ -135,6 +168,8 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
     return result;
   }
   const Eigen::MatrixXd L = llt.matrixL();
+  if (start != nullptr) return RefineFrom(T_map_body_predicted, S, dims, *start, points, plane_points, field,
+                                          unmeasured, std::move(result));
 
   const int K = options_.num_particles;
   auto& ws = *workspace_;
@@ -203,29 +238,63 @@ GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_pred
   result.posterior_covariance = S_p;
   if (options_.refine_iterations > 0) {
     // Refine on the analytic prior N(0, S) (not its sample estimate), from the GPF mean.
-    Matrix6d prior = Matrix6d::Identity();
-    for (int r = 0; r < d; ++r) {
-      for (int c = 0; c < d; ++c) prior(dims[r], dims[c]) = S(r, c);
-    }
-    const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points,
-                              options_.refine_iterations);
-    const PoseRefinement refined =
-        refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, mu_p, dims, points, plane_points, field,
-                       unmeasured);
-    if (refined.ok) {
-      result.refined = true;
-      result.refine_iterations = refined.iterations;
-      result.posterior_mean = refined.mean;
-      result.posterior_covariance = refined.covariance;
-      result.measurement = RecoverPseudoMeasurement(Vector6d::Zero(), prior, refined.mean, refined.covariance,
-                                                    options_.min_information_ratio);
-    }
+    ApplyRefinement(FullPrior(S, dims), dims, RefineOnPosterior(T_map_body_predicted, FullPrior(S, dims), dims, mu_p,
+                                                                  points, plane_points, field, unmeasured,
+                                                                  options_.refine_iterations),
+                    &result);
   }
   if (!result.refined) {
     result.measurement = RecoverPseudoMeasurement(mu_s, S_s, mu_p, S_p, options_.min_information_ratio);
   }
   if (!result.measurement.ok) {
     result.reason = "sample or posterior covariance is not positive definite";
+    return result;
+  }
+  result.ok = true;
+  return result;
+}
+
+PoseRefinement GaussianParticleFilter::RefineOnPosterior(const Eigen::Isometry3d& T_map_body_predicted,
+                                                         const Matrix6d& prior, const std::vector<int>& dims,
+                                                         const Vector6d& start,
+                                                         const std::vector<Eigen::Vector3f>& points,
+                                                         const std::vector<PlanePoint>& plane_points,
+                                                         const DistanceQuery& field, int unmeasured,
+                                                         int iterations) const {
+  const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points, iterations);
+  return refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, start, dims, points, plane_points, field,
+                        unmeasured);
+}
+
+void GaussianParticleFilter::ApplyRefinement(const Matrix6d& prior, const std::vector<int>& /*dims*/,
+                                             const PoseRefinement& refined, GpfResult* result) const {
+  if (!refined.ok) return;
+  result->refined = true;
+  result->refine_iterations = refined.iterations;
+  result->posterior_mean = refined.mean;
+  result->posterior_covariance = refined.covariance;
+  result->measurement = RecoverPseudoMeasurement(Vector6d::Zero(), prior, refined.mean, refined.covariance,
+                                                 options_.min_information_ratio);
+}
+
+GpfResult GaussianParticleFilter::RefineFrom(const Eigen::Isometry3d& T_map_body_predicted, const Eigen::MatrixXd& S,
+                                             const std::vector<int>& dims, const Vector6d& start,
+                                             const std::vector<Eigen::Vector3f>& points,
+                                             const std::vector<PlanePoint>& plane_points, const DistanceQuery& field,
+                                             int unmeasured, GpfResult result) const {
+  const Matrix6d prior = FullPrior(S, dims);
+  result.sample_mean = Vector6d::Zero();
+  result.sample_covariance = prior;
+  ApplyRefinement(prior, dims,
+                  RefineOnPosterior(T_map_body_predicted, prior, dims, start, points, plane_points, field, unmeasured,
+                                    std::max(options_.refine_iterations, kMinRefineFromIterations)),
+                  &result);
+  if (!result.refined) {
+    result.reason = "refinement from the start given failed";
+    return result;
+  }
+  if (!result.measurement.ok) {
+    result.reason = "posterior covariance is not positive definite";
     return result;
   }
   result.ok = true;

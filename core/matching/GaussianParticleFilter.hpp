@@ -8,6 +8,8 @@
 
 #include "matching/DistanceQuery.hpp"
 #include "matching/GpfOptions.hpp"
+#include "matching/PlanePoint.hpp"
+#include "matching/PoseRefiner.hpp"
 #include "matching/PseudoMeasurement.hpp"
 
 namespace unimap::matching {
@@ -49,11 +51,35 @@ class GaussianParticleFilter {
   GpfResult Match(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
                   const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
                   double max_predicted_distance_m = 0.0);
+  // The same without particles, from a pose error found otherwise (a wide
+  // search, pipeline::Reacquirer): the points are gated at the prediction
+  // moved by start, and the Gauss-Newton refinement (at least 5 steps)
+  // starts there, on the same posterior (prior N(0, predicted_covariance)).
+  GpfResult MatchFrom(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
+                      const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                      double max_predicted_distance_m, const Vector6d& start);
 
   const GpfOptions& options() const { return options_; }
 
  private:
   struct Workspace;
+  // The Gauss-Newton refinement on the posterior N(0, prior) x likelihood from start.
+  PoseRefinement RefineOnPosterior(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& prior,
+                                   const std::vector<int>& dims, const Vector6d& start,
+                                   const std::vector<Eigen::Vector3f>& points,
+                                   const std::vector<PlanePoint>& plane_points, const DistanceQuery& field,
+                                   int unmeasured, int iterations) const;
+  // Fills result's posterior and pseudo measurement from a successful refinement.
+  void ApplyRefinement(const Matrix6d& prior, const std::vector<int>& dims, const PoseRefinement& refined,
+                       GpfResult* result) const;
+  // MatchFrom's work once the points are prepared.
+  GpfResult RefineFrom(const Eigen::Isometry3d& T_map_body_predicted, const Eigen::MatrixXd& S,
+                       const std::vector<int>& dims, const Vector6d& start, const std::vector<Eigen::Vector3f>& points,
+                       const std::vector<PlanePoint>& plane_points, const DistanceQuery& field, int unmeasured,
+                       GpfResult result) const;
+  GpfResult MatchImpl(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
+                      const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                      double max_predicted_distance_m, const Vector6d* start);
   GpfOptions options_;
   std::mt19937_64 rng_;
   std::uint64_t scans_matched_ = 0;

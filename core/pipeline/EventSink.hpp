@@ -18,6 +18,8 @@ struct ScanDiagnostics {
   int points_unseen = 0;                                    // of those: not measured (far from the map)
   double effective_sample_size = 0.0;                       // of the particle weights
   double mahalanobis_sq = 0.0;                              // the update's innovation, squared
+  double inflation = 1.0;                                   // the prediction's covariance was scaled by this
+  double inlier_share = 0.0;                                // scan points on the map at the matched pose
   Eigen::Matrix<double, 6, 1> correction = Eigen::Matrix<double, 6, 1>::Zero();    // applied to the prediction
   Eigen::Matrix<double, 6, 1> predicted_sd = Eigen::Matrix<double, 6, 1>::Zero();  // prior standard deviations
   Eigen::Matrix<double, 6, 1> measured_sd = Eigen::Matrix<double, 6, 1>::Zero();   // pseudo measurement's

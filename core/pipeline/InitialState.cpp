@@ -16,6 +16,19 @@ InitialState InitialStateFromWindow(const std::vector<ImuSample>& window,
   if (alignment.ok) {
     out.state.q_world_body = alignment.q_world_body;
     out.state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
+    if (alignment.accel_std_m_s2 > InitialState::kNoiseMargin * options.eskf.sigma_accel_m_s2) {
+      out.sigma_accel_m_s2 = alignment.accel_std_m_s2;
+    }
+    if (alignment.gyro_std_rad_s > InitialState::kNoiseMargin * options.eskf.sigma_gyro_rad_s) {
+      out.sigma_gyro_rad_s = alignment.gyro_std_rad_s;
+    }
+    if (out.sigma_accel_m_s2 || out.sigma_gyro_rad_s) {
+      out.notes.push_back("IMU noise measured at rest: accelerometer " + std::to_string(alignment.accel_std_m_s2) +
+                          " m/s^2, gyroscope " + std::to_string(alignment.gyro_std_rad_s) +
+                          " rad/s per sample, above the platform's sigma_accel_m_s2 " +
+                          std::to_string(options.eskf.sigma_accel_m_s2) + " / sigma_gyro_rad_s " +
+                          std::to_string(options.eskf.sigma_gyro_rad_s) + ": the filter uses the larger ones");
+    }
   } else {
     out.notes.push_back("initial alignment: " + alignment.reason +
                         (initial_pose ? "; attitude from the given pose" : "; starting level"));

@@ -53,7 +53,7 @@ Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> pl
       initial_pose_(initial_pose),
       eskf_(options_.eskf),
       prior_(estimation::MakeMotionPrior(options_.motion)),
-      gpf_(options_.gpf),
+      matcher_(options_),
       encoder_(std::vector<EncoderSample>{}, 0.5),
       history_(2.0),
       accumulator_(options_.scans_per_3d_scan) {
@@ -155,6 +155,13 @@ void Localizer::PredictTo(double t_end) {
   eskf_.PredictPose(t_end, prediction.T_prev_next, prediction.covariance);
 }
 
+Eigen::Isometry3d Localizer::MotionAt(double time_s) const {
+  const double state_time_s = eskf_.state().time_s;
+  if (!prior_ || time_s <= state_time_s) return history_.At(time_s);
+  const estimation::MotionPrediction ahead = prior_->Predict(state_time_s, time_s);
+  return ahead.ok ? eskf_.state().T_world_body() * ahead.T_prev_next : history_.At(time_s);
+}
+
 StageTimes Localizer::Times() const {
   StageTimes times = stats_.times;
   const map::MapUpdateTimes map = map_->UpdateTimes();
@@ -178,6 +185,10 @@ void Localizer::TryInitialize() {
     if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(std::move(note));
   }
   eskf_.Initialize(start.state);
+  if (start.sigma_accel_m_s2 || start.sigma_gyro_rad_s) {
+    eskf_.SetImuNoise(start.sigma_accel_m_s2.value_or(options_.eskf.sigma_accel_m_s2),
+                      start.sigma_gyro_rad_s.value_or(options_.eskf.sigma_gyro_rad_s));
+  }
   eskf_.Propagate(init_imu_.back());
   init_imu_.clear();
   init_imu_.shrink_to_fit();
@@ -192,7 +203,7 @@ void Localizer::ProcessReadyScans(bool finishing) {
     const bool stale = newest - t_end >= options_.max_scan_latency_s;
     // Without an IMU the filter starts at the first scan its prior covers
     // (or, with no prior data at all, once the scan is stale).
-    if (!eskf_.initialized() && prior_ && (prior_->ReadyFor(t_end) || finishing || stale)) InitializeWithoutImu(t_end);
+    if (!eskf_.initialized() && prior_ && (prior_->ReadyFor(t_end) || finishing || stale)) InitializeWithoutImu(io::ScanStartTime(scan));
     if (!eskf_.initialized()) {
       if (!finishing) return;
       Skip(&stats_.scans_unmatched, "scan at " + std::to_string(t_end) + " s: no IMU to initialise: skipped");
@@ -235,14 +246,20 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   } else {
     raw = std::get<RawScan>(scan);
   }
-  if (eskf_.state().time_s < t_end) {
+  // With the IMU the state runs with its samples: predict to the scan's end
+  // (holding the last sample if it lags) for the deskew. With a motion prior
+  // the state is predicted to the scan's reference time once the deskew has
+  // told it (a snapshot is taken at its start), and the deskew extrapolates
+  // with the prior meanwhile: the state and the pose it is matched as must
+  // share one time.
+  if (!prior_ && eskf_.state().time_s < t_end) {
     PredictTo(t_end);
     history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
   }
   BodyScan body;
   try {
     StageTimer timer(&stats_.times.deskew_s);
-    body = plugin_->Deskew(raw, encoder_, [this](double t) { return history_.At(t); });
+    body = plugin_->Deskew(raw, encoder_, [this](double t) { return MotionAt(t); });
   } catch (const InputError& e) {
     Skip(&stats_.scans_bad_input, "scan at " + std::to_string(t_end) + " s: " + e.what());
     return;
@@ -251,6 +268,10 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   // The pose is the body's at the deskewed scan's reference time: the end of
   // the sweep, or the time a snapshot (already deskewed) cloud was taken.
   const double t_ref = std::min(body.reference_time_s, t_end);
+  if (prior_ && eskf_.state().time_s < t_ref) {
+    PredictTo(t_ref);
+    history_.Add(eskf_.state().time_s, eskf_.state().T_world_body());
+  }
   std::vector<Eigen::Vector3f> points_body;
   points_body.reserve(body.points.size());
   for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
@@ -267,13 +288,16 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const bool is_line = std::holds_alternative<LineScan>(scan);
     double match_s = 0.0;
-    matching::GpfResult match;
+    ScanMatchResult matched_scan;
     {
       StageTimer timer(&match_s);
-      match = gpf_.Match(T_predicted, eskf_.PoseCovariance(), points_body,
-                         FieldDistanceQuery(field, options_.trilinear_distance, options_.neighbourhood_planes),
-                         is_line ? options_.line_max_predicted_distance_m : 0.0);
+      matched_scan = matcher_.Match(field, T_predicted, eskf_.PoseCovariance(), points_body, is_line);
     }
+    const matching::GpfResult& match = matched_scan.match;
+    stats_.scans_searched += matched_scan.searched ? 1 : 0;
+    stats_.scans_reacquired += matched_scan.reacquired ? 1 : 0;
+    diagnostics.inflation = matched_scan.inflation;
+    diagnostics.inlier_share = matched_scan.inliers;
     stats_.times.match_s += match_s - match.downsample_s;
     stats_.times.downsample_s += match.downsample_s;
     diagnostics.points_used = match.points_used;
@@ -281,6 +305,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     diagnostics.effective_sample_size = match.effective_sample_size;
     if (match.ok) {
       StageTimer timer(&stats_.times.eskf_s);
+      eskf_.InflateMotionCovariance(matched_scan.inflation);
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       diagnostics.measured_sd = match.measurement.R.diagonal().cwiseSqrt();
       diagnostics.mahalanobis_sq = update.mahalanobis_sq;

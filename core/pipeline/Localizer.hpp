@@ -16,9 +16,9 @@
 #include "map/LineGapFill.hpp"
 #include "map/ScanMap.hpp"
 #include "pipeline/EventSink.hpp"
-#include "matching/GaussianParticleFilter.hpp"
 #include "pipeline/LocalizerOptions.hpp"
 #include "pipeline/PoseHistory.hpp"
+#include "pipeline/ScanMatcher.hpp"
 #include "pipeline/ScanAccumulator.hpp"
 #include "pipeline/StageTimes.hpp"
 #include "unimap/EncoderTrack.hpp"
@@ -46,6 +46,8 @@ struct LocalizerStats {
   std::size_t scans = 0;              // scans received
   std::size_t scans_matched = 0;      // with a GPF update
   std::size_t scans_unmatched = 0;    // localised by the IMU only (no map yet, too few points, GPF failure)
+  std::size_t scans_searched = 0;     // matched with a wide search (uncertain prediction or poor match)
+  std::size_t scans_reacquired = 0;   // of those, placed where the search found them (prediction was off)
   std::size_t scans_bad_input = 0;    // rejected by the payload (NaN points, times, ...): skipped
   std::size_t scans_no_encoder = 0;   // never covered by encoder samples: skipped
   std::size_t scans_out_of_order = 0;  // ending before an already processed scan: skipped
@@ -103,6 +105,9 @@ class Localizer : public EventSink {
   // Predicts the state to t_end (IMU or motion prior; without an increment
   // the pose is held with a wide prior and the scan counted in scans_no_motion).
   void PredictTo(double t_end);
+  // The body pose at time_s for deskewing: the history, and past the state's
+  // time the motion prior's extrapolation (the IMU state is never behind).
+  Eigen::Isometry3d MotionAt(double time_s) const;
   void ProcessReadyScans(bool finishing);
   void ProcessScan(const io::ScanRecord& scan);
   void Skip(std::size_t* counter, const std::string& message);
@@ -114,7 +119,7 @@ class Localizer : public EventSink {
   std::optional<Eigen::Isometry3d> initial_pose_;
   estimation::Eskf eskf_;
   std::unique_ptr<estimation::MotionPrior> prior_;  // set when options.motion.source is not kImu
-  matching::GaussianParticleFilter gpf_;
+  ScanMatcher matcher_;
   EncoderTrack encoder_;
   PoseHistory history_;
   ScanAccumulator accumulator_;

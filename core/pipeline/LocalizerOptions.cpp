@@ -21,6 +21,10 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     return false;
   }
   if (!motion.IsValid(why)) return false;
+  if (!reacquire.IsValid(&inner)) {
+    *why = "reacquire: " + inner;
+    return false;
+  }
   if (neighbourhood_planes) {
     if (!neighbourhood_planes->IsValid(&inner)) {
       *why = "neighbourhood_plane: " + inner;

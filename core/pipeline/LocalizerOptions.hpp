@@ -9,6 +9,7 @@
 #include "map/LineGapFill.hpp"
 #include "map/NeighbourhoodPlane.hpp"
 #include "matching/GpfOptions.hpp"
+#include "pipeline/Reacquirer.hpp"
 #include "unimap/CoreParameters.hpp"
 
 namespace unimap::pipeline {
@@ -21,6 +22,7 @@ struct LocalizerOptions {
   estimation::MotionPriorOptions motion;  // prediction source (IMU, or a prior for data without one)
   matching::GpfOptions gpf;         // particles, likelihood, downsampling
   map::DistanceMapOptions map;      // resolution and box (distance-map max range)
+  ReacquireOptions reacquire;       // the wide search when a prediction is uncertain or a match poor
   int scans_per_3d_scan = 1;        // N: scans accumulated before a map insertion
   double static_init_s = 1.0;       // IMU window at the start used to align with gravity (s)
   InitialAttitude initial_attitude = InitialAttitude::kGravity;  // with a given initial pose

@@ -87,6 +87,8 @@ JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   o.Add("encoder_rejected", s.encoder_rejected);
   o.Add("scans_matched", s.scans_matched);
   o.Add("scans_unmatched", s.scans_unmatched);
+  o.Add("scans_searched", s.scans_searched);
+  o.Add("scans_reacquired", s.scans_reacquired);
   o.Add("scans_bad_input", s.scans_bad_input);
   o.Add("scans_no_encoder", s.scans_no_encoder);
   o.Add("scans_out_of_order", s.scans_out_of_order);
@@ -199,7 +201,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   std::cout << "scans " << in.stats.scans << " (matched " << in.stats.scans_matched << "), data "
             << summary.data_duration_s << " s in " << summary.processing_s << " s: " << summary.realtime_factor
             << "x real time, peak RSS " << summary.peak_rss_mb << " MiB\n";
-  for (const auto& message : in.stats.messages) std::cout << "  skipped: " << message << '\n';
+  for (const auto& message : in.stats.messages) std::cout << "  note: " << message << '\n';
   if (in.world_frame_errors && world_errors.poses > 0) {
     std::cout << "  position_rmse_m = " << world_errors.position_rmse_m
               << "  (unaligned: estimate and truth share the map frame)\n"
@@ -246,7 +248,7 @@ std::atomic<bool> g_stop{false};
 extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
 
 std::string TraceHeader() {
-  return "# time_s,matched,points,points_used,points_unseen,ess,mahalanobis_sq,"
+  return "# time_s,matched,points,points_used,points_unseen,ess,mahalanobis_sq,inflation,inlier_share,"
          "corr_x,corr_y,corr_z,corr_rx,corr_ry,corr_rz,pred_sd_x,pred_sd_y,pred_sd_z,pred_sd_rx,pred_sd_ry,"
          "pred_sd_rz,meas_sd_x,meas_sd_y,meas_sd_z,meas_sd_rx,meas_sd_ry,meas_sd_rz,vx,vy,vz,bax,bay,baz,bgx,"
          "bgy,bgz\n";
@@ -268,6 +270,8 @@ std::string TraceLine(const pipeline::ScanPose& pose) {
   add(d.points_unseen);
   add(d.effective_sample_size);
   add(d.mahalanobis_sq);
+  add(d.inflation);
+  add(d.inlier_share);
   for (int i = 0; i < 6; ++i) add(d.correction(i));
   for (int i = 0; i < 6; ++i) add(d.predicted_sd(i));
   for (int i = 0; i < 6; ++i) add(d.measured_sd(i));

@@ -21,7 +21,7 @@ Eigen::Isometry3d PoseAt(double t) {
   return T;
 }
 
-TEST(ConstantVelocityPriorTest, StandsStillUntilTwoPosesAreKnown) {
+TEST(ConstantVelocityPriorTest, StandsStillWithTheFastestSpreadUntilTwoPosesAreKnown) {
   MotionPriorOptions options;
   ConstantVelocityPrior prior(options);
   MotionPrediction p = prior.Predict(0.0, 0.5);
@@ -30,7 +30,12 @@ TEST(ConstantVelocityPriorTest, StandsStillUntilTwoPosesAreKnown) {
   prior.Observe(0.0, PoseAt(0.0));
   p = prior.Predict(0.0, 0.5);
   EXPECT_TRUE(p.T_prev_next.isApprox(Eigen::Isometry3d::Identity()));
-  // sigma = velocity_sigma_m_s * dt
+  // The velocity is unknown: sigma = max_speed_m_s * dt (a sensor may already move).
+  EXPECT_NEAR(std::sqrt(p.covariance(0, 0)), options.max_speed_m_s * 0.5, 1e-12);
+  EXPECT_NEAR(std::sqrt(p.covariance(5, 5)), options.max_rate_rad_s * 0.5, 1e-12);
+  // Once it is known: sigma = velocity_sigma_m_s * dt.
+  prior.Observe(0.5, PoseAt(0.5));
+  p = prior.Predict(0.5, 1.0);
   EXPECT_NEAR(std::sqrt(p.covariance(0, 0)), options.velocity_sigma_m_s * 0.5, 1e-12);
   EXPECT_NEAR(std::sqrt(p.covariance(5, 5)), options.rate_sigma_rad_s * 0.5, 1e-12);
 }

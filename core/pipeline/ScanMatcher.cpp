@@ -1,0 +1,74 @@
+#include "pipeline/ScanMatcher.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "estimation/So3.hpp"
+#include "pipeline/FieldDistanceQuery.hpp"
+
+namespace unimap::pipeline {
+namespace {
+
+// A match leaving less than this share of the scan on the map is searched from.
+constexpr double kPoorInlierShare = 0.5;
+// The reacquired correction is made this many sigmas of the inflated prediction.
+constexpr double kCorrectionSigmas = 2.0;
+
+}  // namespace
+
+ScanMatcher::ScanMatcher(const LocalizerOptions& options)
+    : options_(options), gpf_(options.gpf), reacquirer_(options.reacquire) {}
+
+ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceField>& field,
+                                   const Eigen::Isometry3d& T_predicted,
+                                   const matching::Matrix6d& predicted_covariance,
+                                   const std::vector<Eigen::Vector3f>& points_body, bool line) {
+  const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighbourhood_planes);
+  const double gate_m = line ? options_.line_max_predicted_distance_m : 0.0;
+  const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
+  const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
+  const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
+                    rotation_sigma > options_.reacquire.wide_sigma_rad;
+  ScanMatchResult out;
+  const std::vector<Eigen::Vector3f> subset = StridedSubset(points_body, options_.reacquire.max_points);
+  double matched_share = 0.0;
+  if (!wide) {
+    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+    if (out.match.ok) {
+      matched_share =
+          reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
+      out.inliers = matched_share;
+      if (matched_share >= kPoorInlierShare) return out;
+    }
+  }
+  out.searched = true;
+  const ReacquireResult found =
+      reacquirer_.Search(field, T_predicted, predicted_covariance, subset, options_.gpf.point_sigma_m,
+                         options_.gpf.clamp_distance_m);
+  // An uncertain prediction says little: the search's pose is taken unless
+  // it holds fewer of the scan. A confident one is replaced only by a pose
+  // holding clearly more of it.
+  const bool better = found.ok && (wide ? found.inliers_found >= found.inliers_predicted
+                                        : found.inliers_found >= matched_share + options_.reacquire.min_inlier_gain);
+  if (!better) {
+    if (wide) {  // nothing better found: match as usual
+      out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+      if (out.match.ok) {
+        out.inliers = reacquirer_.InlierShare(
+            *field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
+      }
+    }
+    return out;
+  }
+  // The prediction was off by found.error: inflate it until that is a
+  // kCorrectionSigmas correction, and refine from there.
+  const double mahalanobis_sq = found.error.dot(predicted_covariance.ldlt().solve(found.error));
+  out.inflation = std::max(1.0, mahalanobis_sq / (kCorrectionSigmas * kCorrectionSigmas));
+  out.match = gpf_.MatchFrom(T_predicted, out.inflation * predicted_covariance, points_body, query, gate_m,
+                             found.error);
+  out.reacquired = out.match.ok;
+  out.inliers = found.inliers_found;
+  return out;
+}
+
+}  // namespace unimap::pipeline
