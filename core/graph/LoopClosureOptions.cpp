@@ -1,5 +1,7 @@
 #include "graph/LoopClosureOptions.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace unimap::graph {
@@ -72,6 +74,22 @@ bool LoopClosureOptions::IsValid(std::string* why) const {
     return Fail(why, "min_sigma_position_m and min_sigma_rotation_rad must be >= 0");
   }
   return true;
+}
+
+LoopClosureOptions LoopClosureOptions::ForVoxel(double voxel_m) {
+  LoopClosureOptions o;
+  const double fine = std::max(1.0, voxel_m / o.fine_resolution_m);
+  o.fine_resolution_m *= fine;
+  o.fine_clamp_m *= fine;
+  o.normal_cell_m *= fine;
+  o.refine_voxel_m *= fine;
+  o.huber_m *= fine;
+  o.inlier_distance_m *= fine;
+  const double coarse = std::max(1.0, voxel_m / o.search_resolution_m);
+  o.search_resolution_m *= coarse;
+  o.search_kernel_m *= coarse;
+  o.search_voxel_m *= coarse;
+  return o;
 }
 
 }  // namespace unimap::graph

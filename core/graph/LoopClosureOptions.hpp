@@ -66,6 +66,11 @@ struct LoopClosureOptions {
   // True when every field is in range; otherwise false with the reason in
   // *why (when why is not null).
   bool IsValid(std::string* why) const;
+  // The defaults for submaps voxel-filtered at voxel_m: for voxels above
+  // 0.1 m the fine-scale lengths (fine grid, clamp, normal cell, refinement
+  // voxel, Huber, inlier distance) grow with the voxel, and for voxels above
+  // the search cell the search grid, kernel and voxel do too.
+  static LoopClosureOptions ForVoxel(double voxel_m);
 };
 
 }  // namespace unimap::graph

@@ -26,7 +26,7 @@ RetiredSubmap Submap::Retire() {
     // WaitForUpdates (or is moot now): keep what the octree holds.
   }
   const Eigen::Vector3f origin = T_local_submap_.translation().cast<float>();
-  retired.points_submap = map_->OccupiedVoxelCentres();
+  retired.points_submap = map_->SurfaceMeans();
   retired.update_times = map_->UpdateTimes();
   for (Eigen::Vector3f& p : retired.points_submap) p -= origin;
   map_.reset();

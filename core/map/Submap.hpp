@@ -10,11 +10,13 @@
 namespace unimap::map {
 
 // What a submap keeps once retired: no live distance map, only its surface
-// (occupied voxel centres) in its own frame, for loop closure and the map.
+// (the mean of each occupied voxel's returns) in its own frame, for loop
+// closure.
 struct RetiredSubmap {
   int id = 0;                                                  // SubmapManager id
   Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();  // frame at creation (local odometry frame)
-  std::vector<Eigen::Vector3f> points_submap;                  // occupied voxel centres, submap frame
+  std::vector<Eigen::Vector3f> points_submap;                  // surface points (the mean of each occupied
+                                                               // voxel's returns), submap frame
   int scans_3d = 0;                                            // 3D scans it received
   MapUpdateTimes update_times;                                 // its map's update times, summed
 };

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <cstdlib>  // EXPERIMENT
 
 #include <Eigen/Geometry>
 
@@ -71,7 +72,8 @@ SurfaceDistanceLayer::SurfaceDistanceLayer(const DistanceMapOptions& options)
       log_odds_min_(LogOdds(options.clamp_min_probability)),
       log_odds_max_(LogOdds(options.clamp_max_probability)),
       distances_(options.compute_distances),
-      surfaces_(options.resolution_m, /*signed_distances=*/false) {}
+      surfaces_(options.resolution_m, /*signed_distances=*/false,
+                std::getenv("UNIMAP_EXP_DISK") ? static_cast<float>(std::atof(std::getenv("UNIMAP_EXP_DISK"))) : SurfacePoints::kPatchRadius) {}  // EXPERIMENT
 
 SurfaceDistanceLayer::~SurfaceDistanceLayer() = default;
 
@@ -437,6 +439,19 @@ std::vector<Eigen::Vector3f> SurfaceDistanceLayer::VoxelCentres() const {
   centres.reserve(keys.size());
   for (const std::uint64_t packed : keys) centres.push_back(Centre(Unpack(packed)));
   return centres;
+}
+
+std::vector<Eigen::Vector3f> SurfaceDistanceLayer::SurfaceMeans() const {
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> means;
+  means.reserve(occupied_);
+  for (const auto& [packed, site] : sites_) {
+    if (site->occupied && site->element != nullptr) means.emplace_back(packed, site->element->mean_m);
+  }
+  std::sort(means.begin(), means.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Eigen::Vector3f> out;
+  out.reserve(means.size());
+  for (const auto& [packed, mean] : means) out.push_back(mean);
+  return out;
 }
 
 SurfaceDistanceCounts SurfaceDistanceLayer::counts() const {

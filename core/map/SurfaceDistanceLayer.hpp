@@ -93,6 +93,9 @@ class SurfaceDistanceLayer {
 
   // Centres of the occupied voxels (map frame), in key order.
   std::vector<Eigen::Vector3f> VoxelCentres() const;
+  // The mean of the returns in each occupied voxel (map frame), in key
+  // order: where the surface is, not where the voxel's centre happens to be.
+  std::vector<Eigen::Vector3f> SurfaceMeans() const;
   const SurfacePoints& surfaces() const { return surfaces_; }
   SurfaceDistanceCounts counts() const;
 

@@ -82,13 +82,13 @@ void SurfaceDistanceMap::WaitForUpdates() {
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }
 
-std::vector<Eigen::Vector3f> SurfaceDistanceMap::OccupiedVoxelCentres() {
+std::vector<Eigen::Vector3f> SurfaceDistanceMap::SurfaceMeans() {
   {
     std::unique_lock<std::mutex> lock(mutex_);
     idle_.wait(lock, [this] { return done_ == queued_; });
   }
   std::lock_guard<std::mutex> layer_lock(layer_mutex_);
-  return layer_.VoxelCentres();
+  return layer_.SurfaceMeans();
 }
 
 MapUpdateTimes SurfaceDistanceMap::UpdateTimes() const {

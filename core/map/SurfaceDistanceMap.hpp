@@ -56,8 +56,9 @@ class SurfaceDistanceMap : public ScanMap {
   void WaitForUpdates() override;
   MapUpdateTimes UpdateTimes() const override;
 
-  // Centres of the voxels holding a surface (waits for queued scans first).
-  std::vector<Eigen::Vector3f> OccupiedVoxelCentres();
+  // The mean of the returns in each occupied voxel (waits for queued scans
+  // first; SurfaceDistanceLayer::SurfaceMeans).
+  std::vector<Eigen::Vector3f> SurfaceMeans();
   SurfaceDistanceMapStats Stats() const;
   const DistanceMapOptions& options() const { return options_; }
 

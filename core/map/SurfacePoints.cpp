@@ -57,10 +57,10 @@ void FitPlane(const Eigen::Matrix3f& scatter, const Eigen::Vector3f& mean_view, 
 
 }  // namespace
 
-SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances)
+SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float patch_radius_voxels)
     : resolution_m_(static_cast<float>(resolution_m)),
       signed_(signed_distances),
-      patch_radius_m_(kPatchRadius * resolution_m_),
+      patch_radius_m_(patch_radius_voxels * resolution_m_),
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 
 void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map,

@@ -46,7 +46,8 @@ class SurfacePoints {
   static constexpr float kRefitFraction = 0.5f;
 
   // signed_distances false: SignedDistance returns magnitudes only.
-  explicit SurfacePoints(double resolution_m, bool signed_distances = true);
+  // patch_radius_voxels: the disk's radius (kPatchRadius by default).
+  explicit SurfacePoints(double resolution_m, bool signed_distances = true, float patch_radius_voxels = kPatchRadius);
 
   // The packed form of a 16-bit octree key (x, y, z).
   static std::uint64_t Pack(const Eigen::Vector3i& key) {
@@ -114,7 +115,7 @@ class SurfacePoints {
 
   float resolution_m_;
   bool signed_;               // SignedDistance is negative behind oriented disks
-  float patch_radius_m_;      // kPatchRadius * resolution_m_
+  float patch_radius_m_;      // the disk's radius (m)
   float patch_radius_sq_m2_;  // its square
   std::unordered_map<std::uint64_t, Entry> entries_;
 };

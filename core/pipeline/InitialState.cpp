@@ -16,6 +16,10 @@ InitialState InitialStateFromWindow(const std::vector<ImuSample>& window,
   if (alignment.ok) {
     out.state.q_world_body = alignment.q_world_body;
     out.state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
+    // Along gravity the accelerometer's bias is what the specific force at
+    // rest exceeds gravity by (across it, bias and tilt cannot be told apart).
+    const Eigen::Vector3d up_body = alignment.mean_specific_force_m_s2.normalized();
+    out.state.accel_bias_m_s2 = (alignment.gravity_m_s2 - options.eskf.gravity_m_s2) * up_body;
     if (alignment.accel_std_m_s2 > InitialState::kNoiseMargin * options.eskf.sigma_accel_m_s2) {
       out.sigma_accel_m_s2 = alignment.accel_std_m_s2;
     }

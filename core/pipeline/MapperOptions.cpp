@@ -46,6 +46,7 @@ MapperOptions MapperOptions::FromPlatform(const CoreParameters& core) {
   o.localizer = LocalizerOptions::FromPlatform(core);
   o.submaps.scans_3d_per_submap = core.scans_3d_per_submap;
   o.submaps.map = o.localizer.map;
+  o.loop_closure = graph::LoopClosureOptions::ForVoxel(core.distance_map_resolution_m);
   o.scans_3d_per_optimization = core.scans_3d_per_optimization;
   return o;
 }

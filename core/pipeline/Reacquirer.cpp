@@ -15,9 +15,13 @@ namespace {
 
 // Effective points of the search's likelihood (as the matcher's default).
 constexpr double kEffectivePoints = 20.0;
-// A prior so wide that only the scan decides (m^2 and rad^2).
-constexpr double kFlatPositionVariance = 1e4;
-constexpr double kFlatRotationVariance = 1e2;
+// The search's prior: the prediction's covariance widened this much (10
+// sigmas): the scan decides where it constrains the pose, the prediction
+// where it does not (a 2D line, a corridor's length).
+constexpr double kPriorWidening = 100.0;
+// Its position and rotation variances at least (m^2, rad^2).
+constexpr double kMinPositionVariance = 1e-2;
+constexpr double kMinRotationVariance = 1e-4;
 
 ReacquireOptions Checked(const ReacquireOptions& options) {
   std::string why;
@@ -136,9 +140,8 @@ ReacquireResult Reacquirer::Search(const std::shared_ptr<const map::DistanceFiel
     coarse_source_ = field.get();
     coarse_sequence_ = field->sequence();
   }
-  matching::Matrix6d flat = matching::Matrix6d::Zero();
-  flat.diagonal() << kFlatPositionVariance, kFlatPositionVariance, kFlatPositionVariance, kFlatRotationVariance,
-      kFlatRotationVariance, kFlatRotationVariance;
+  matching::Matrix6d flat = kPriorWidening * predicted_covariance;
+  for (int i = 0; i < 6; ++i) flat(i, i) = std::max(flat(i, i), i < 3 ? kMinPositionVariance : kMinRotationVariance);
   const std::vector<int> dims = {0, 1, 2, 3, 4, 5};
   const matching::Vector6d zero = matching::Vector6d::Zero();
   // Coarse: sigma of a coarse cell, the coarse reach as the clamp.
@@ -152,6 +155,12 @@ ReacquireResult Reacquirer::Search(const std::shared_ptr<const map::DistanceFiel
                                                        dims, points, FieldDistanceQuery(field, true));
   if (!refined.ok) {
     result.reason = "refinement failed: " + refined.reason;
+    return result;
+  }
+  // A pose outside the searched region is not one the search can vouch for.
+  if (refined.mean.head<3>().norm() > options_.coarse_clamp_m ||
+      refined.mean.tail<3>().norm() > 2.0 * options_.max_yaw_rad) {
+    result.reason = "the pose found lies outside the searched region";
     return result;
   }
   result.ok = true;

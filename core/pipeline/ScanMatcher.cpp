@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>  // EXPERIMENT
 
 #include "estimation/So3.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
@@ -24,7 +25,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
                                    const matching::Matrix6d& predicted_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
   const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighbourhood_planes);
-  const double gate_m = line ? options_.line_max_predicted_distance_m : 0.0;
+  const double gate_m = (line || std::getenv("UNIMAP_EXP_GATE3D")) ? options_.line_max_predicted_distance_m : 0.0;  // EXPERIMENT
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
   const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
@@ -32,6 +33,16 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   ScanMatchResult out;
   const std::vector<Eigen::Vector3f> subset = StridedSubset(points_body, options_.reacquire.max_points);
   double matched_share = 0.0;
+  // A single 2D line holds too little of the scene to be placed in 6 DOF
+  // on its own: line scans are matched around their prediction only.
+  if (line) {
+    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+    if (out.match.ok) {
+      out.inliers = reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean),
+                                            subset);
+    }
+    return out;
+  }
   if (!wide) {
     out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
     if (out.match.ok) {
