@@ -13,6 +13,9 @@
 #include "MappingRun.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
+#include "NumberChecks.hpp"
+#include "OutputFolder.hpp"
+#include "SignalGuard.hpp"
 #include "TextFormat.hpp"
 #include "TextTable.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
@@ -78,6 +81,8 @@ int RunDemo(const DemoOptions& options) {
     sim::SimulationOptions simulation;
     simulation.out_dir = data;
     if (options.duration_s > 0.0) simulation.duration_s = options.duration_s;
+    simulation.stop = &SignalGuard::StopFlag();
+    PrepareOutputFolder(out, "--out");
     std::cout << "1/3 simulating the paper's tunnel (rotating Hokuyo) into " << data.string() << " ...\n";
     const sim::SimulationSummary s = sim::Simulator(scenario, simulation).Run();
     std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, "
@@ -114,10 +119,12 @@ void AddDemoCommand(CLI::App* app) {
       "demo", "Simulate the paper's tunnel, map it with the rotating Hokuyo and compare with the paper");
   cmd->add_option("--out", options->out_dir, "Output folder (default unimap-demo)");
   cmd->add_option("--configs", options->configs, "Folder holding scenarios/ and platforms/ (default: found)");
-  cmd->add_option("--duration-s", options->duration_s, "Simulate only this much of the flight (s)");
+  cmd->add_option("--duration-s", options->duration_s, "Simulate only this much of the flight (s)")
+      ->check(FinitePositive());
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->callback([options]() {
-    const int code = RunDemo(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunDemo(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }
