@@ -29,10 +29,13 @@ struct DatasetLimits {
   double max_position_m = 1e8;
   // |time|: 1e10 s is the year 2286 as Unix time (catches nanoseconds read as seconds).
   double max_abs_time_s = 1e10;
-  // Largest step between consecutive IMU / encoder samples: at 100 Hz or
-  // more, a second without a sample is lost data or a clock jump.
+  // Largest step between consecutive IMU samples: at 100 Hz or more, a
+  // second without a sample is lost data or a clock jump, and the filter
+  // would integrate across it.
   double max_imu_step_s = 1.0;
-  double max_encoder_step_s = 1.0;
+  // Largest step between consecutive encoder samples: shorter gaps leave
+  // the scans in them uncovered (the localiser skips and counts them).
+  double max_encoder_step_s = 10.0;
   // Largest step between consecutive scans / odometry samples (real logs:
   // 3.5 s in the Intel Research Lab CARMEN log).
   double max_scan_step_s = 60.0;

@@ -144,10 +144,13 @@ streams)
   case_ imu_empty_motion_imu "empty imu.csv with --motion imu" 2 "--motion imu: the dataset has no IMU data" $(run_on "$d") --motion imu
   case_ imu_empty_auto "empty imu.csv, --motion auto: says it uses constant velocity" 0 \
     "motion: constant-velocity \(the dataset has neither IMU data" $(run_on "$d")
+  d=$(data imu_none); [ "$LIST" = 1 ] || rm "$d/imu.csv"
+  case_ imu_missing_auto "no imu.csv, --motion auto: says it uses constant velocity" 0 \
+    "motion: constant-velocity \(the dataset has neither IMU data" $(run_on "$d")
   d=$(data enc_1e300); [ "$LIST" = 1 ] || set_field "$d/encoder.csv" 50 2 1e300
   case_ encoder_1e300 "encoder.csv: one angle of 1e300 rad" 2 "encoder.csv:50: encoder angle 1e\+300 rad is beyond \+-1e\+09 rad" $(run_on "$d")
-  d=$(data enc_jump); [ "$LIST" = 1 ] || awk 'NR >= 100 && !/^#/ { $1 = sprintf("%.6f", $1 + 5) } { print }' "$work/base/encoder.csv" >"$d/encoder.csv"
-  case_ encoder_clock_jump "encoder.csv: the clock jumps +5 s" 2 "encoder.csv:100: time jumps 5.01[0-9]* s ahead" $(run_on "$d")
+  d=$(data enc_jump); [ "$LIST" = 1 ] || awk 'NR >= 100 && !/^#/ { $1 = sprintf("%.6f", $1 + 20) } { print }' "$work/base/encoder.csv" >"$d/encoder.csv"
+  case_ encoder_clock_jump "encoder.csv: the clock jumps +20 s" 2 "encoder.csv:100: time jumps 20.01[0-9]* s ahead" $(run_on "$d")
   d=$(data enc_none); [ "$LIST" = 1 ] || rm "$d/encoder.csv"
   case_ encoder_missing "no encoder.csv for a motor payload" 2 "payload 'rotating_2d' needs motor encoder samples \(encoder.csv\), the dataset has none" $(run_on "$d")
   d=$(data odo_pos); [ "$LIST" = 1 ] || printf '0 0 0 0 0 0 0 1\n0.1 1e300 0 0 0 0 0 1\n' >"$d/odometry.csv"
@@ -211,6 +214,9 @@ convert)
     printf 'BZh91AY&SYgarbage' >"$work/bad.clf.bz2"
     mkdir -p "$work/kitti_odd" "$work/kitti_empty" "$work/kitti_pcd"
     head -c 20 /dev/zero >"$work/kitti_odd/000000.bin"
+    mkdir -p "$work/kitti_huge"
+    printf 'VERSION 0.7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nWIDTH 2147483647\nHEIGHT 1\nPOINTS 2147483647\nDATA binary\n' >"$work/kitti_huge/000000.pcd"
+    head -c 1000 /dev/zero >>"$work/kitti_huge/000000.pcd"
     printf 'VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\nx y z\n4 5 6\n' >"$work/kitti_pcd/000000.pcd"
     head -c 5000 "$exe" >"$work/random.bag"
     printf '#ROSBAG V2.0\n' >"$work/header.bag"
@@ -229,6 +235,9 @@ convert)
     convert --format kitti --input "$work/kitti_odd" --out "$work/k_odd"
   case_ kitti_no_scans "KITTI: a folder without scans" 2 "kitti_empty: no KITTI scans \(\*.bin or \*.pcd\)" \
     convert --format kitti --input "$work/kitti_empty" --out "$work/k_empty"
+  case_ kitti_pcd_huge_points "KITTI: a .pcd announcing 2^31-1 points" 2 \
+    "000000.pcd: the header announces 2147483647 points of 16 bytes \(34359738352 bytes\), only 1000 bytes follow" \
+    convert --format kitti --input "$work/kitti_huge" --out "$work/k_huge"
   case_ kitti_pcd_text "KITTI: an ascii .pcd with a line of text" 2 "000000.pcd:10: value 1 'x' is not a number" \
     convert --format kitti --input "$work/kitti_pcd" --out "$work/k_pcd"
   case_ rosbag_random "ROS bag: 5000 binary bytes" 2 "random.bag: cannot read ROS bag" \
