@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "io/NumberText.hpp"
 #include "io/TextLineSource.hpp"
 #include "unimap/Errors.hpp"
 
@@ -49,13 +50,6 @@ Eigen::Isometry3d PlanarPose(double x, double y, double theta) {
   return T;
 }
 
-// A number for messages: shortest round-trip text.
-std::string Text(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
-
 // Fields after the message content: ipc_ts host logger_ts.
 constexpr std::size_t kTrailerFields = 3;
 
@@ -80,13 +74,13 @@ void CarmenReader::SetBeamLayout(std::size_t beams, double fov_rad, LineScan* sc
 
 void CarmenReader::CheckTime(double time_s) const {
   if (!(std::abs(time_s) <= options_.max_abs_time_s)) {
-    throw FieldError{"ipc timestamp " + Text(time_s) + " s is beyond +-" + Text(options_.max_abs_time_s) +
+    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s is beyond +-" + NumberString(options_.max_abs_time_s) +
                      " s (not a plausible clock)"};
   }
   if (has_last_time_ && time_s - last_time_s_ > options_.max_time_step_s) {
-    throw FieldError{"ipc timestamp " + Text(time_s) + " s jumps " + Text(time_s - last_time_s_) +
-                     " s past the previous message's (" + Text(last_time_s_) + " s), more than " +
-                     Text(options_.max_time_step_s) + " s: a clock jump"};
+    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s jumps " + NumberString(time_s - last_time_s_) +
+                     " s past the previous message's (" + NumberString(last_time_s_) + " s), more than " +
+                     NumberString(options_.max_time_step_s) + " s: a clock jump"};
   }
 }
 

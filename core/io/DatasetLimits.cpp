@@ -8,12 +8,6 @@
 namespace unimap::io {
 namespace {
 
-std::string Text(double value) {
-  std::string out;
-  AppendNumber(&out, value);
-  return out;
-}
-
 // A limit as shown in messages: 4 significant digits.
 std::string Limit(double value) {
   char buffer[32];
@@ -26,7 +20,7 @@ std::string Limit(double value) {
 std::string Beyond(const char* what, const Eigen::Vector3d& v, double limit, const char* unit) {
   for (int i = 0; i < 3; ++i) {
     if (std::abs(v[i]) <= limit) continue;
-    return std::string(what) + " " + "xyz"[i] + " " + Text(v[i]) + " " + unit + " is " +
+    return std::string(what) + " " + "xyz"[i] + " " + NumberString(v[i]) + " " + unit + " is " +
            (std::isnan(v[i]) ? std::string("not a number") : "beyond +-" + Limit(limit) + " " + unit);
   }
   return {};
@@ -65,7 +59,7 @@ std::string DatasetLimits::ImuProblem(const ImuSample& sample) const {
 
 std::string DatasetLimits::EncoderProblem(const EncoderSample& sample) const {
   if (std::abs(sample.angle_rad) <= max_encoder_angle_rad) return {};
-  return "encoder angle " + Text(sample.angle_rad) + " rad is " +
+  return "encoder angle " + NumberString(sample.angle_rad) + " rad is " +
          (std::isnan(sample.angle_rad) ? std::string("not a number")
                                        : "beyond +-" + Limit(max_encoder_angle_rad) + " rad");
 }
@@ -78,10 +72,10 @@ std::string DatasetLimits::ScanProblem(const ScanRecord& scan) const {
   const double start_s = ScanStartTime(scan);
   const double duration_s = ScanEndTime(scan) - start_s;
   if (!(std::abs(start_s) <= max_abs_time_s)) {
-    return "scan start time " + Text(start_s) + " s is beyond +-" + Limit(max_abs_time_s) + " s";
+    return "scan start time " + NumberString(start_s) + " s is beyond +-" + Limit(max_abs_time_s) + " s";
   }
   if (!(std::abs(duration_s) <= max_scan_duration_s)) {
-    return "scan lasts " + Text(duration_s) + " s, longer than " + Limit(max_scan_duration_s) + " s";
+    return "scan lasts " + NumberString(duration_s) + " s, longer than " + Limit(max_scan_duration_s) + " s";
   }
   const auto* line = std::get_if<LineScan>(&scan);
   if (line != nullptr && check_line_geometry) {
@@ -89,7 +83,7 @@ std::string DatasetLimits::ScanProblem(const ScanRecord& scan) const {
       return "line scan angle_min_rad / angle_increment_rad are not finite";
     }
     if (!(line->range_min_m >= 0.0) || !(line->range_max_m >= line->range_min_m)) {
-      return "line scan range limits [" + Text(line->range_min_m) + ", " + Text(line->range_max_m) +
+      return "line scan range limits [" + NumberString(line->range_min_m) + ", " + NumberString(line->range_max_m) +
              "] m are not 0 <= range_min_m <= range_max_m";
     }
   }
