@@ -88,6 +88,10 @@ int RunDemo(const DemoOptions& options) {
     std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, "
               << s.scans << " scans, in " << Fixed(s.wall_s, 1) << " s\n";
 
+    if (s.interrupted) {
+      std::cout << "interrupted: the dataset holds the first " << Fixed(s.duration_s, 1) << " s\n";
+      return 0;  // the exit code is the signal's (SignalGuard::ExitCode)
+    }
     std::cout << "2/3 mapping it (unimap run) ...\n";
     MappingRunOptions run;
     run.platform_file = s.payload_source;
@@ -96,7 +100,7 @@ int RunDemo(const DemoOptions& options) {
     run.threads = options.threads;
     run.quiet = !isatty(STDERR_FILENO);
     const int code = RunMappingToFolder(run);
-    if (code != 0) return code;
+    if (code != 0 || SignalGuard::Received() != 0) return code;  // stopped: no evaluation of a cut run
 
     std::cout << "3/3 evaluation against the ground truth:\n";
     const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(

@@ -316,6 +316,12 @@ signals)
   [ "$LIST" = 1 ] || { [ -f "$sim/metadata.yaml" ] || fail "simulate_sigint: no metadata.yaml"; \
     code=$(run run --platform "$hokuyo" --quiet --data "$sim" --out "$work/sim_int_run" --max-duration-s 1); \
     [ "$code" = 0 ] || [ "$code" = 3 ] || fail "simulate_sigint: the interrupted dataset does not read (exit $code)"; }
+  dm="$work/demo_int"
+  case_ demo_sigint "demo, SIGINT while simulating: the shorter dataset, no mapping of it" 130 "interrupted: the dataset holds the first" bash -c "
+    '$exe' demo --duration-s 60 --out '$dm' & pid=\$!
+    for i in \$(seq 1 20000); do [ -f '$dm/data/scans.bin.partial' ] && break; sleep 0.001; done
+    kill -INT \$pid; wait \$pid"
+  [ "$LIST" = 1 ] || [ -f "$dm/data/metadata.yaml" ] || fail "demo_sigint: no metadata.yaml"
   cv="$work/conv_term"
   case_ convert_sigterm "convert, SIGTERM while converting: a complete dataset of what was read" 143 "interrupted \(signal 15\)" bash -c "
     '$exe' convert --format carmen --input '$src/../shared/data/radish/intel.clf.bz2' --out '$cv' & pid=\$!
