@@ -19,7 +19,7 @@ RELEASE_DIR="${RELEASE_DIR:-build}"
 FUZZ_RUNS="${FUZZ_RUNS:-1000000}"
 FUZZ_SECONDS="${FUZZ_SECONDS:-3600}"
 DATA=../shared/data
-ALL="platform_yaml metadata_yaml dataset_streams scans_bin tum kitti pcd ply carmen rosbag"
+ALL="platform_yaml metadata_yaml dataset_streams scans_bin tum kitti pcd ply carmen rosbag bt"
 HARNESSES="${*:-$ALL}"
 
 sanitize="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"

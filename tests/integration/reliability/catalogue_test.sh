@@ -197,6 +197,12 @@ maps)
   case_ pcd_ascii_text_line "localize --map: an ascii PCD with a line of text" 2 "text.pcd:10: value 1 'the' is not a number" $(loc text) "$work/text.pcd"
   case_ pcd_no_finite_points "localize --map: a PCD of NaN / inf points only" 2 "nan.pcd': no finite points" $(loc nan) "$work/nan.pcd"
   case_ bt_random "localize --map: 4000 binary bytes as an OctoMap .bt" 2 "cannot read octree '.*random.bt': not a valid OctoMap .bt file" $(loc bt) "$work/random.bt"
+  if [ "$LIST" = 0 ]; then
+    code=$(run run --platform "$hokuyo" --quiet --data "$work/base" --out "$work/mapped")
+    [ "$code" = 0 ] || fail "run exit $code"
+    head -c 2000 "$work/mapped/map.bt" >"$work/cut.bt"
+  fi
+  case_ bt_truncated "localize --map: an OctoMap .bt cut after 2000 bytes" 2 "cannot read octree '.*cut.bt': not a valid OctoMap .bt file" $(loc cut) "$work/cut.bt"
   case_ map_missing "localize --map: no such file" 2 "map '.*nothing.pcd': no such file" $(loc missing) "$work/nothing.pcd"
   case_ map_extension "localize --map: a .txt map" 2 "unsupported format '.txt' \(expected .bt or .pcd\)" $(loc txt) "$work/map.txt"
   [ "$LIST" = 1 ] || printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n2 2 0 0 0 0 0 1\n' >"$work/line.tum"
