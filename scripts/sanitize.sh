@@ -44,10 +44,16 @@ asan() {  # asan [ctest args...]
 
 tsan() {
   configure "$TSAN_DIR" "-fsanitize=thread -fno-omit-frame-pointer"
+  # (set before the build: gtest_discover_tests runs the test binaries)
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/scripts/sanitizer-suppressions/tsan.txt"
   cmake --build "$TSAN_DIR" -j2 --target unimap_payload_rotating_2d unimap_payload_fixed_3d \
     unimap_payload_rotating_3d unit_map unit_graph unit_matching unit_pipeline
-  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/scripts/sanitizer-suppressions/tsan.txt"
-  ctest --test-dir "$TSAN_DIR" --output-on-failure -j2 -R '^unit_(map|graph|matching|pipeline)\.'
+  # Left out: the one test that runs the particle filter on several oneTBB threads. Debian's libtbb is
+  # not instrumented, so TSan cannot see the hand-over of a split range to a worker and reports races
+  # inside TBB's own parallel_for / partitioner headers (docs/reliability.md); suppressing those
+  # frames would also hide races in the loop bodies they run.
+  ctest --test-dir "$TSAN_DIR" --output-on-failure -j2 -R '^unit_(map|graph|matching|pipeline)\.' \
+    -E 'GaussianParticleFilter\.DeterministicForASeedAndThreadCount'
 }
 
 case "$MODE" in
