@@ -71,10 +71,18 @@ ParameterValue ValueOf(const YAML::Node& node, const std::string& file, const st
   return ParseScalar(node.Scalar());
 }
 
+// Most parameters a platform file may set: a bound on what YAML aliases
+// (`*a` repeating a group) can expand to.
+constexpr std::size_t kMaxOverrides = 10000;
+
 // Appends the leaves of a `parameters:` map (recursively, keys joined with
-// '.') to *out; first_line remembers where each key was set to catch duplicates.
+// '.') to *out; first_line remembers where each key was set to catch
+// duplicates; groups holds the maps being walked (an alias to one of them
+// is a cycle, which would recurse forever).
 void CollectOverrides(const YAML::Node& map, const std::string& prefix, const std::string& file,
-                      std::vector<ParameterOverride>* out, std::map<std::string, int>* first_line) {
+                      std::vector<ParameterOverride>* out, std::map<std::string, int>* first_line,
+                      std::vector<YAML::Node>* groups) {
+  groups->push_back(map);
   for (auto it = map.begin(); it != map.end(); ++it) {
     const YAML::Node key_node = it->first;
     const YAML::Node value_node = it->second;
@@ -84,9 +92,14 @@ void CollectOverrides(const YAML::Node& map, const std::string& prefix, const st
                                                 KindOf(key_node));
     }
     const std::string key = prefix.empty() ? key_node.Scalar() : prefix + "." + key_node.Scalar();
+    for (const YAML::Node& group : *groups) {
+      if (value_node.is(group)) {
+        throw ConfigError(file, line, key, "a YAML alias refers to a group that contains it (a cycle)");
+      }
+    }
     if (value_node.IsMap()) {
       if (value_node.size() == 0) throw ConfigError(file, line, key, "empty group: no value given");
-      CollectOverrides(value_node, key, file, out, first_line);
+      CollectOverrides(value_node, key, file, out, first_line, groups);
       continue;
     }
     ParameterValue value = ValueOf(value_node, file, key, line);
@@ -95,8 +108,13 @@ void CollectOverrides(const YAML::Node& map, const std::string& prefix, const st
       throw ConfigError(file, line, key,
                         "set twice (first on line " + std::to_string(previous->second) + ")");
     }
+    if (out->size() == kMaxOverrides) {
+      throw ConfigError(file, line, key,
+                        "more than " + std::to_string(kMaxOverrides) + " parameters (YAML aliases expanding?)");
+    }
     out->push_back(ParameterOverride{key, std::move(value), line});
   }
+  groups->pop_back();
 }
 
 }  // namespace
@@ -167,7 +185,8 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
           throw ConfigError(file, line, key,
                             "expected a map of parameter overrides, got " + KindOf(value_node));
         }
-        CollectOverrides(value_node, "", file, &result.overrides_, &parameter_lines);
+        std::vector<YAML::Node> groups;
+        CollectOverrides(value_node, "", file, &result.overrides_, &parameter_lines, &groups);
       }
     }
     if (top_lines.count("plugin") == 0) {

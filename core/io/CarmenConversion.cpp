@@ -25,6 +25,10 @@ ConversionReport ConvertCarmen(const ConversionOptions& options) {
   ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
 
   while (std::optional<CarmenMessage> message = reader.Next()) {
+    if (options.stop != nullptr && options.stop->load()) {
+      report.interrupted = true;
+      break;
+    }
     if (auto* laser = std::get_if<CarmenLaser>(&*message)) {
       if (!odom_lines) writer.WriteOdometry(laser->odometry);
       writer.WriteScan(std::move(laser->scan));

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "io/NumberText.hpp"
 #include "io/TextLineSource.hpp"
 #include "unimap/Errors.hpp"
 
@@ -56,8 +57,10 @@ constexpr std::size_t kTrailerFields = 3;
 
 CarmenReader::CarmenReader(const std::filesystem::path& file, CarmenReaderOptions options)
     : options_(options), source_(std::make_unique<TextLineSource>(file)) {
-  if (!(options_.fov_rad > 0.0) || !(options_.range_max_m > options_.range_min_m)) {
-    throw InputError(file.string() + ": CARMEN reader options need fov_rad > 0 and range_max_m > range_min_m");
+  if (!(options_.fov_rad > 0.0) || !(options_.range_max_m > options_.range_min_m) ||
+      !(options_.max_time_step_s > 0.0) || !(options_.max_abs_time_s > 0.0)) {
+    throw InputError(file.string() +
+                     ": CARMEN reader options need fov_rad > 0, range_max_m > range_min_m and positive time limits");
   }
 }
 
@@ -67,6 +70,18 @@ void CarmenReader::SetBeamLayout(std::size_t beams, double fov_rad, LineScan* sc
   const std::size_t steps = (beams % 2 == 1 && beams > 1) ? beams - 1 : beams;
   scan->angle_min_rad = -0.5 * fov_rad;
   scan->angle_increment_rad = fov_rad / static_cast<double>(steps);
+}
+
+void CarmenReader::CheckTime(double time_s) const {
+  if (!(std::abs(time_s) <= options_.max_abs_time_s)) {
+    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s is beyond +-" + NumberString(options_.max_abs_time_s) +
+                     " s (not a plausible clock)"};
+  }
+  if (has_last_time_ && time_s - last_time_s_ > options_.max_time_step_s) {
+    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s jumps " + NumberString(time_s - last_time_s_) +
+                     " s past the previous message's (" + NumberString(last_time_s_) + " s), more than " +
+                     NumberString(options_.max_time_step_s) + " s: a clock jump"};
+  }
 }
 
 bool CarmenReader::AtDamagedEnd() const { return !source_->ended_with_newline(); }
@@ -98,6 +113,7 @@ CarmenLaser CarmenReader::ParseLaser(const std::vector<std::string_view>& fields
   for (std::size_t k = 0; k < 6; ++k) pose[k] = ParseDouble(fields[2 + beams + k], "pose field");
   const double ipc_time_s = ParseDouble(fields[2 + beams + 6], "ipc timestamp");
   ParseDouble(fields[2 + beams + 8], "logger timestamp");
+  CheckTime(ipc_time_s);
   scan.start_time_s = ipc_time_s;
   laser.pose_xytheta = Eigen::Vector3d(pose[0], pose[1], pose[2]);
   laser.odometry.time_s = ipc_time_s;
@@ -116,6 +132,7 @@ CarmenOdometry CarmenReader::ParseOdometry(const std::vector<std::string_view>& 
   odometry.line = source_->line_number();
   odometry.odometry.time_s = ParseDouble(fields[7], "ipc timestamp");
   ParseDouble(fields[9], "logger timestamp");
+  CheckTime(odometry.odometry.time_s);
   odometry.odometry.T_odom_body = PlanarPose(values[0], values[1], values[2]);
   odometry.tv_m_s = values[3];
   odometry.rv_rad_s = values[4];
@@ -141,10 +158,14 @@ std::optional<CarmenMessage> CarmenReader::Next() {
       if (laser) {
         CarmenLaser message = ParseLaser(fields_);
         ++stats_.laser_scans;
+        last_time_s_ = message.scan.start_time_s;
+        has_last_time_ = true;
         return message;
       }
       CarmenOdometry message = ParseOdometry(fields_);
       ++stats_.odometry;
+      last_time_s_ = message.odometry.time_s;
+      has_last_time_ = true;
       return message;
     } catch (const FieldError& error) {
       if (!AtDamagedEnd()) {

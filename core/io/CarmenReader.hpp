@@ -24,6 +24,10 @@ struct CarmenReaderOptions {
   double fov_rad = 3.14159265358979323846;  // angle the beams span, centred on +x
   double range_min_m = 0.0;                 // shorter returns are invalid
   double range_max_m = 80.0;                // longer returns (SICK max-range marker 81.9x) are invalid
+  // A message stamped more than this after the previous one is a clock jump
+  // (an InputError naming the line): the real logs step at most 3.5 s (intel.clf).
+  double max_time_step_s = 60.0;
+  double max_abs_time_s = 1e10;             // |ipc timestamp| (1e10 s: the year 2286 in Unix time)
 };
 
 // One FLASER line: "FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_ts host logger_ts".
@@ -68,8 +72,9 @@ struct CarmenReaderStats {
 // Streams a CARMEN log (.clf, or bzip2-compressed .clf.bz2), one message at
 // a time; memory does not grow with the log. FLASER and ODOM lines are
 // delivered; '#' comments and blank lines are counted; other message types
-// are counted per type and skipped. A malformed FLASER/ODOM line throws
-// InputError "<file>:<line>: <reason>" -- except a damaged LAST line (the
+// are counted per type and skipped. A malformed FLASER/ODOM line, or one
+// stamped beyond max_abs_time_s or more than max_time_step_s after the
+// previous message, throws InputError "<file>:<line>: <reason>" -- except a damaged LAST line (the
 // file or its compressed stream ends inside it, as when a logger was killed),
 // which is a counted, listed skip (stats().skipped).
 class CarmenReader {
@@ -92,6 +97,8 @@ class CarmenReader {
   static void SetBeamLayout(std::size_t beams, double fov_rad, LineScan* scan);
 
  private:
+  // Throws FieldError when time_s is beyond the options' clock limits.
+  void CheckTime(double time_s) const;
   // Parses a FLASER / ODOM line; throws InputError naming the line.
   CarmenLaser ParseLaser(const std::vector<std::string_view>& fields) const;
   CarmenOdometry ParseOdometry(const std::vector<std::string_view>& fields) const;
@@ -103,6 +110,8 @@ class CarmenReader {
   std::string line_;                        // current line text
   std::vector<std::string_view> fields_;    // current line split on blanks
   CarmenReaderStats stats_;
+  double last_time_s_ = 0.0;                // ipc timestamp of the previous message delivered
+  bool has_last_time_ = false;              // a message was delivered
 };
 
 }  // namespace unimap::io

@@ -1,6 +1,7 @@
 #pragma once
 // Real data (KITTI, CARMEN, ROS 1 bags) into the dataset format
 // (docs/dataset-format.md), streamed: `unimap convert` and tests call these.
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
 #include <map>
@@ -29,6 +30,7 @@ struct ConversionOptions {
   CarmenReaderOptions carmen;     // FLASER beam layout
   CarmenOdometrySource carmen_odometry = CarmenOdometrySource::kAuto;
   RosbagReaderOptions rosbag;     // topic choice
+  const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): stop reading, finish the dataset
 };
 
 // What a conversion wrote and left out.
@@ -42,6 +44,8 @@ struct ConversionReport {
   std::size_t dropped_points = 0;             // scan points left out (non-finite)
   std::map<std::string, std::size_t> skipped; // reason -> items (lines, messages) not converted
   std::vector<std::string> notes;             // choices made (topics, calibration, odometry source)
+  bool interrupted = false;                   // stopped early by ConversionOptions::stop: the dataset
+                                              // holds what was read before
 };
 
 // Each reads `options.input` and writes `options.output`; throws InputError

@@ -19,6 +19,9 @@ namespace unimap::io {
 namespace {
 
 constexpr int kFormatVersion = 1;  // the layout this build reads and writes
+// Most payload parameters metadata.yaml may hold: a bound on what YAML
+// aliases (`*a` repeating a group) can expand to.
+constexpr std::size_t kMaxParameters = 10000;
 
 // Top-level keys in the order they are written.
 const char* const kKeys[] = {"format_version", "source", "payload", "scenario", "seed",
@@ -202,8 +205,12 @@ struct Parser {
     if (!value.IsScalar()) Fail(value, key, "expected a string, got " + KindOf(value));
     return value.Scalar();
   }
+  // payload_parameters, flattened into *out; lines remembers where each key
+  // was set; groups holds the maps being walked (an alias to one of them is
+  // a cycle, which would recurse forever).
   void Parameters(const YAML::Node& map, const std::string& prefix, ParameterMap* out,
-                  std::map<std::string, int>* lines) const {
+                  std::map<std::string, int>* lines, std::vector<YAML::Node>* groups) const {
+    groups->push_back(map);
     for (auto it = map.begin(); it != map.end(); ++it) {
       const YAML::Node key_node = it->first;
       if (!key_node.IsScalar() || key_node.Scalar().empty() ||
@@ -216,13 +223,21 @@ struct Parser {
       if (!inserted) {
         Fail(key_node, key, "set twice (first on line " + std::to_string(previous->second) + ")");
       }
+      if (lines->size() > kMaxParameters) {
+        Fail(key_node, key, "more than " + std::to_string(kMaxParameters) +
+                                " payload parameters (YAML aliases expanding?)");
+      }
+      for (const YAML::Node& group : *groups) {
+        if (it->second.is(group)) Fail(key_node, key, "a YAML alias refers to a group that contains it (a cycle)");
+      }
       if (it->second.IsMap()) {
         if (it->second.size() == 0) Fail(key_node, key, "empty group: no value given");
-        Parameters(it->second, key, out, lines);
+        Parameters(it->second, key, out, lines, groups);
       } else {
         out->Set(key, Leaf(it->second, key));
       }
     }
+    groups->pop_back();
   }
 };
 
@@ -274,7 +289,8 @@ DatasetMetadata ParseDatasetMetadata(const std::string& yaml_text, const std::st
       if (key == "payload_parameters" && !value.IsNull()) {
         if (!value.IsMap()) parser.Fail(value, key, "expected a map, got " + KindOf(value));
         std::map<std::string, int> lines;
-        parser.Parameters(value, "", &metadata.payload_parameters, &lines);
+        std::vector<YAML::Node> groups;
+        parser.Parameters(value, "", &metadata.payload_parameters, &lines, &groups);
       }
     }
     if (seen.count("payload") == 0) throw ConfigError(file, 0, "payload", "missing");

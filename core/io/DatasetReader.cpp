@@ -1,5 +1,6 @@
 #include "io/DatasetReader.hpp"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <system_error>
@@ -28,14 +29,33 @@ std::unique_ptr<T> OpenIfPresent(const std::filesystem::path& folder, const char
 
 class DatasetReader::Impl {
  public:
-  explicit Impl(const std::filesystem::path& folder)
-      : metadata_(LoadChecked(folder)),
+  Impl(const std::filesystem::path& folder, const DatasetLimits& limits)
+      : limits_(CheckedLimits(limits)),
+        metadata_(LoadChecked(folder)),
         imu_(OpenIfPresent<NumberLineStream>(folder, layout::kImu, layout::kImuColumns)),
         encoder_(OpenIfPresent<NumberLineStream>(folder, layout::kEncoder,
                                                  layout::kEncoderColumns)),
         odometry_(OpenIfPresent<NumberLineStream>(folder, layout::kOdometry, kTumColumns)),
         scans_(OpenIfPresent<ScanFileReader>(folder, layout::kScans)),
-        groundtruth_(OpenIfPresent<NumberLineStream>(folder, layout::kGroundTruth, kTumColumns)) {}
+        groundtruth_(OpenIfPresent<NumberLineStream>(folder, layout::kGroundTruth, kTumColumns)) {
+    const double max_s = limits_.max_abs_time_s;
+    if (imu_) imu_->SetTimeLimits(max_s, limits_.max_imu_step_s);
+    if (encoder_) encoder_->SetTimeLimits(max_s, limits_.max_encoder_step_s);
+    if (odometry_) odometry_->SetTimeLimits(max_s, limits_.max_odometry_step_s);
+    if (groundtruth_) groundtruth_->SetTimeLimits(max_s, HUGE_VAL);  // not integrated: gaps are fine
+    if (scans_) scans_->SetLimits(limits_);
+  }
+
+  static DatasetLimits CheckedLimits(const DatasetLimits& limits) {
+    std::string why;
+    if (!limits.IsValid(&why)) throw ConfigError("", 0, "", "dataset limits: " + why);
+    return limits;
+  }
+
+  // Calls rows.Fail(problem) unless problem is empty.
+  static void Check(const NumberLineStream& rows, const std::string& problem) {
+    if (!problem.empty()) rows.Fail(problem);
+  }
 
   static DatasetMetadata LoadChecked(const std::filesystem::path& folder) {
     std::error_code ec;
@@ -57,13 +77,16 @@ class DatasetReader::Impl {
     sample.time_s = v[0];
     sample.accel_m_s2 = Eigen::Vector3d(v[1], v[2], v[3]);
     sample.gyro_rad_s = Eigen::Vector3d(v[4], v[5], v[6]);
+    Check(*imu_, limits_.ImuProblem(sample));
     return sample;
   }
 
   std::optional<EncoderSample> ReadEncoder() {
     double v[layout::kEncoderColumns];
     if (!encoder_ || !encoder_->Next(v)) return std::nullopt;
-    return EncoderSample{v[0], v[1]};
+    const EncoderSample sample{v[0], v[1]};
+    Check(*encoder_, limits_.EncoderProblem(sample));
+    return sample;
   }
 
   std::optional<OdometrySample> ReadOdometry() {
@@ -72,6 +95,7 @@ class DatasetReader::Impl {
     OdometrySample sample;
     sample.time_s = v[0];
     sample.T_odom_body = TumRowPose(v, *odometry_);
+    Check(*odometry_, limits_.PositionProblem(sample.T_odom_body.translation()));
     return sample;
   }
 
@@ -83,6 +107,7 @@ class DatasetReader::Impl {
     StampedPose pose;
     pose.time_s = v[0];
     pose.T_map_body = TumRowPose(v, *groundtruth_);
+    Check(*groundtruth_, limits_.PositionProblem(pose.T_map_body.translation()));
     return pose;
   }
 
@@ -125,6 +150,7 @@ class DatasetReader::Impl {
     }
   }
 
+  DatasetLimits limits_;                           // plausibility limits of every item read
   DatasetMetadata metadata_;                       // metadata.yaml
   std::unique_ptr<NumberLineStream> imu_;          // imu.csv, if present
   std::unique_ptr<NumberLineStream> encoder_;      // encoder.csv, if present
@@ -138,8 +164,8 @@ class DatasetReader::Impl {
   std::optional<ScanRecord> scan_ahead_;
 };
 
-DatasetReader::DatasetReader(const std::filesystem::path& folder)
-    : impl_(std::make_unique<Impl>(folder)) {}
+DatasetReader::DatasetReader(const std::filesystem::path& folder, const DatasetLimits& limits)
+    : impl_(std::make_unique<Impl>(folder, limits)) {}
 
 DatasetReader::~DatasetReader() = default;
 
@@ -155,6 +181,16 @@ bool DatasetReader::has_imu() {
 bool DatasetReader::has_odometry() {
   if (!impl_->odometry_ahead_) impl_->odometry_ahead_ = impl_->ReadOdometry();
   return impl_->odometry_ahead_.has_value();
+}
+
+bool DatasetReader::has_encoder() {
+  if (!impl_->encoder_ahead_) impl_->encoder_ahead_ = impl_->ReadEncoder();
+  return impl_->encoder_ahead_.has_value();
+}
+
+bool DatasetReader::has_scans() {
+  if (!impl_->scan_ahead_) impl_->scan_ahead_ = impl_->ReadScan();
+  return impl_->scan_ahead_.has_value();
 }
 
 std::optional<ImuSample> DatasetReader::NextImu() {

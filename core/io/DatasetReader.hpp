@@ -4,6 +4,7 @@
 #include <optional>
 #include <variant>
 
+#include "io/DatasetLimits.hpp"
 #include "io/DatasetMetadata.hpp"
 #include "io/ScanRecord.hpp"
 #include "unimap/EncoderSample.hpp"
@@ -26,8 +27,12 @@ using DatasetEvent = std::variant<ImuSample, EncoderSample, OdometrySample, Scan
 class DatasetReader {
  public:
   // Reads metadata.yaml and opens the streams present; throws ConfigError /
-  // InputError (missing folder or metadata, unsupported format_version).
-  explicit DatasetReader(const std::filesystem::path& folder);
+  // InputError (missing folder or metadata, unsupported format_version,
+  // invalid limits). Every item read is checked against the limits: a value
+  // or a time step beyond them throws InputError naming the file and the
+  // line or record (e.g. "imu.csv:301: accelerometer x 1e+300 m/s^2 is
+  // beyond +-392.3 m/s^2").
+  explicit DatasetReader(const std::filesystem::path& folder, const DatasetLimits& limits = {});
   ~DatasetReader();
   DatasetReader(const DatasetReader&) = delete;
   DatasetReader& operator=(const DatasetReader&) = delete;
@@ -39,6 +44,8 @@ class DatasetReader {
   // call: whether the dataset has IMU / wheel-odometry data at all.
   bool has_imu();
   bool has_odometry();
+  bool has_encoder();
+  bool has_scans();
 
   std::optional<ImuSample> NextImu();
   std::optional<EncoderSample> NextEncoder();

@@ -17,8 +17,9 @@ namespace unimap::io {
 // in non-decreasing time order (InputError otherwise, naming the stream; the
 // rejected item is not written and the writer stays usable). A stream's file
 // is created by its first item: a stream never written has no file.
-// Destroying the writer without Finish() leaves only ".partial" files and no
-// metadata.yaml, which readers report as an incomplete dataset.
+// Destroying the writer without Finish() (an error, a full disk) removes the
+// ".partial" files it was writing and leaves no metadata.yaml, which readers
+// report as an incomplete dataset.
 class DatasetWriter {
  public:
   // Creates the folder if needed; throws InputError if it cannot. An existing

@@ -22,13 +22,18 @@ ConversionReport ConvertKitti(const ConversionOptions& options) {
   DatasetWriter writer(options.output, metadata);
   // Frames are in file order and times.txt is checked non-decreasing: no reordering needed.
   for (std::size_t i = 0; i < reader.size(); ++i) {
+    if (options.stop != nullptr && options.stop->load()) {
+      report.interrupted = true;
+      break;
+    }
     KittiFrame frame = reader.Read(i);
     report.dropped_points += frame.dropped_points;
     writer.WriteScan(std::move(frame.scan));
     ++report.scans;
   }
-  for (const StampedPose& pose : reader.lidar_poses()) {
-    writer.WriteGroundTruth(pose);
+  // The poses of the frames converted.
+  for (std::size_t i = 0; i < reader.lidar_poses().size() && i < report.scans; ++i) {
+    writer.WriteGroundTruth(reader.lidar_poses()[i]);
     ++report.groundtruth;
   }
   writer.Finish();

@@ -27,6 +27,11 @@ void NumberLineStream::Fail(const std::string& reason) const {
   throw InputError(lines_.label() + ":" + std::to_string(lines_.line_number()) + ": " + reason);
 }
 
+void NumberLineStream::SetTimeLimits(double max_abs_time_s, double max_step_s) {
+  max_abs_time_s_ = max_abs_time_s;
+  max_step_s_ = max_step_s;
+}
+
 bool NumberLineStream::Next(double* values) {
   std::string_view line;
   for (;;) {
@@ -58,8 +63,16 @@ bool NumberLineStream::Next(double* values) {
   }
   const double time_s = values[0];
   if (!std::isfinite(time_s)) Fail("time " + Text(time_s) + " is not finite");
+  if (!(std::abs(time_s) <= max_abs_time_s_)) {
+    Fail("time " + Text(time_s) + " s is beyond +-" + Text(max_abs_time_s_) + " s (not a plausible clock)");
+  }
   if (has_last_ && time_s < last_time_s_) {
     Fail("time goes backwards: " + Text(time_s) + " s after " + Text(last_time_s_) + " s");
+  }
+  if (has_last_ && time_s - last_time_s_ > max_step_s_) {
+    Fail("time jumps " + Text(time_s - last_time_s_) + " s ahead (" + Text(time_s) + " s after " +
+         Text(last_time_s_) + " s), more than the " + Text(max_step_s_) +
+         " s a sample may follow the previous one: a clock jump or lost data");
   }
   last_time_s_ = time_s;
   has_last_ = true;

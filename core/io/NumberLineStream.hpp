@@ -1,5 +1,6 @@
 #pragma once
 // Internal to unimap_io: the text streams of a dataset and TUM files.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -19,8 +20,11 @@ class NumberLineStream {
 
   // Reads the next row into values[0 .. columns); false at the end of the
   // file. Throws on a wrong number of fields, a field that is not a number, a
-  // non-finite time, or a time before the previous row's.
+  // non-finite time, a time before the previous row's, or (SetTimeLimits) a
+  // time beyond +-max_abs_time_s or more than max_step_s after the previous row's.
   bool Next(double* values);
+  // Limits for the times of later rows (none by default).
+  void SetTimeLimits(double max_abs_time_s, double max_step_s);
   // Throws InputError "<file>:<line of the last row>: <reason>".
   [[noreturn]] void Fail(const std::string& reason) const;
   // The file as named in errors.
@@ -29,6 +33,8 @@ class NumberLineStream {
  private:
   LineReader lines_;            // the file, line by line
   std::size_t columns_;         // numbers per row
+  double max_abs_time_s_ = HUGE_VAL;  // |time| of a row at most
+  double max_step_s_ = HUGE_VAL;      // time after the previous row's at most
   double last_time_s_ = 0.0;    // time of the previous row
   bool has_last_ = false;       // a row was read already
 };

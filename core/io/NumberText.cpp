@@ -22,4 +22,10 @@ bool ParseNumber(std::string_view field, double* value) {
   return result.ec == std::errc() && result.ptr == end;
 }
 
+std::string NumberString(double value) {
+  std::string out;
+  AppendNumber(&out, value);
+  return out;
+}
+
 }  // namespace unimap::io

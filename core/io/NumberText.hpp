@@ -9,6 +9,8 @@ namespace unimap::io {
 // Appends the shortest decimal text that reads back as exactly `value`
 // (std::to_chars; locale-independent; "nan", "inf", "-inf" for non-finite).
 void AppendNumber(std::string* out, double value);
+// The same text as a string (for messages).
+std::string NumberString(double value);
 
 // Reads one whole field as a double (std::from_chars, locale-independent; a
 // leading '+' is accepted, subnormals are kept, "nan"/"inf" are accepted).

@@ -30,7 +30,10 @@ PartialFile::PartialFile(std::filesystem::path final_path)
 }
 
 PartialFile::~PartialFile() {
-  if (stream_ != nullptr) std::fclose(stream_);
+  if (stream_ == nullptr) return;
+  std::fclose(stream_);
+  std::error_code ignored;  // nothing to report from a destructor
+  std::filesystem::remove(partial_path_, ignored);
 }
 
 void PartialFile::Write(const void* data, std::size_t size) {

@@ -12,9 +12,11 @@
 namespace unimap::io {
 
 // Writes "<final>.partial" through a large buffer; Commit() flushes, syncs
-// and renames it to <final>. Destroying an uncommitted file closes it and
-// leaves the ".partial" behind (so an interrupted writer never leaves a file
-// that looks complete). Every failure is an InputError naming the file.
+// and renames it to <final>. Destroying an uncommitted file (an error, a
+// full disk) closes and removes the ".partial": an interrupted writer leaves
+// neither a file that looks complete nor a half-written one. (Only a killed
+// process, which runs no destructor, can leave a ".partial".) Every failure
+// is an InputError naming the file.
 class PartialFile {
  public:
   // Suffix of the file while it is being written.

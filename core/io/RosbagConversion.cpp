@@ -48,6 +48,10 @@ ConversionReport ConvertRosbag(const ConversionOptions& options) {
   ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
   bool time_convention_noted = false;
   while (std::optional<RosbagMessage> message = reader.Next()) {
+    if (options.stop != nullptr && options.stop->load()) {
+      report.interrupted = true;
+      break;
+    }
     std::visit(
         [&](auto& data) {
           using T = std::decay_t<decltype(data)>;

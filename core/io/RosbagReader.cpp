@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "io/RosbagRecords.hpp"
 #include "unimap/Errors.hpp"
 
 #if UNIMAP_WITH_ROSBAG
@@ -248,6 +249,7 @@ RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions
   impl_->label = bag.string();
   impl_->options = std::move(options);
   try {
+    CheckRosbagRecords(bag);  // librosbag allocates the lengths it reads unchecked
     impl_->bag.open(impl_->label, rosbag::bagmode::Read);
     impl_->ListTopics();
     impl_->Select();

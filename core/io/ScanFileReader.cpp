@@ -88,6 +88,15 @@ std::optional<ScanRecord> ScanFileReader::Next() {
     throw InputError(Where() + ": time goes backwards: the scan ends at " + Text(end_time_s) +
                      " s, the previous one at " + Text(last_end_time_s_) + " s");
   }
+  if (limits_) {
+    const std::string problem = limits_->ScanProblem(scan);
+    if (!problem.empty()) throw InputError(Where() + ": " + problem);
+    if (record_ > 0 && end_time_s - last_end_time_s_ > limits_->max_scan_step_s) {
+      throw InputError(Where() + ": time jumps " + Text(end_time_s - last_end_time_s_) + " s ahead (the scan ends at " +
+                       Text(end_time_s) + " s, the previous one at " + Text(last_end_time_s_) + " s), more than the " +
+                       Text(limits_->max_scan_step_s) + " s a scan may follow the previous one: a clock jump or lost data");
+    }
+  }
   last_end_time_s_ = end_time_s;
   offset_ += sizeof(header) + size;
   ++record_;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/DatasetLimits.hpp"
 #include "io/ScanRecord.hpp"
 
 namespace unimap::io {
@@ -23,8 +24,12 @@ class ScanFileReader {
   ScanFileReader& operator=(const ScanFileReader&) = delete;
 
   // The next scan; std::nullopt at the end of the file. Throws for a
-  // truncated or malformed record or a scan ending before the previous one.
+  // truncated or malformed record, a scan ending before the previous one,
+  // or (SetLimits) one the limits find implausible or ending more than
+  // max_scan_step_s after the previous one.
   std::optional<ScanRecord> Next();
+  // Plausibility limits for the records read next (none by default).
+  void SetLimits(const DatasetLimits& limits) { limits_ = limits; }
 
  private:
   // "<file>: record <k> (byte <offset>)" for the record being read.
@@ -38,6 +43,7 @@ class ScanFileReader {
   std::uint64_t record_ = 0;             // records read so far
   std::vector<unsigned char> payload_;   // reused payload bytes
   double last_end_time_s_ = 0.0;         // ScanEndTime of the previous record
+  std::optional<DatasetLimits> limits_;  // plausibility limits, if set
 };
 
 }  // namespace unimap::io

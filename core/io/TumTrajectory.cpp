@@ -67,7 +67,7 @@ TumTrajectoryWriter::~TumTrajectoryWriter() {
   try {
     Close();
   } catch (const std::exception&) {
-    // Destructors must not throw; the ".partial" file stays for inspection.
+    // Destructors must not throw; PartialFile's destructor removes the ".partial".
   }
 }
 

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <cstdlib>  // EXPERIMENT
 
 #include <Eigen/Geometry>
 
@@ -72,8 +71,7 @@ SurfaceDistanceLayer::SurfaceDistanceLayer(const DistanceMapOptions& options)
       log_odds_min_(LogOdds(options.clamp_min_probability)),
       log_odds_max_(LogOdds(options.clamp_max_probability)),
       distances_(options.compute_distances),
-      surfaces_(options.resolution_m, /*signed_distances=*/false,
-                std::getenv("UNIMAP_EXP_DISK") ? static_cast<float>(std::atof(std::getenv("UNIMAP_EXP_DISK"))) : SurfacePoints::kPatchRadius) {}  // EXPERIMENT
+      surfaces_(options.resolution_m, /*signed_distances=*/false) {}
 
 SurfaceDistanceLayer::~SurfaceDistanceLayer() = default;
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>  // EXPERIMENT
 
 #include "estimation/So3.hpp"
 #include "pipeline/FieldDistanceQuery.hpp"
@@ -25,7 +24,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
                                    const matching::Matrix6d& predicted_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
   const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighbourhood_planes);
-  const double gate_m = (line || std::getenv("UNIMAP_EXP_GATE3D")) ? options_.line_max_predicted_distance_m : 0.0;  // EXPERIMENT
+  const double gate_m = line ? options_.line_max_predicted_distance_m : 0.0;
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
   const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||

@@ -171,10 +171,18 @@ SimulationSummary Simulator::Run() {
   const double scan_limit =
       uses_encoder ? std::floor(duration * s.encoder_rate_hz + 1e-9) / s.encoder_rate_hz : duration;
   double next_report = 0.0;
+  double last_end_s = 0.0;  // end of the last scan simulated
   for (std::size_t k = 0;; ++k) {
     const double start = static_cast<double>(k) * lidar->scan_period_s();
     const double end = start + lidar->scan_span_s();
     if (end > scan_limit) break;
+    if (options_.stop != nullptr && options_.stop->load()) {
+      // The data ends where the scans written so far end (the whole scan_limit else).
+      summary.interrupted = true;
+      duration = std::min(duration, last_end_s);
+      break;
+    }
+    last_end_s = end;
     while (uses_encoder && (true_track.empty() || true_track.end_time_s() < end)) write_encoder_sample();
     advance_imu(end);
     true_track.DropBefore(start);

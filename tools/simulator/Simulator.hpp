@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -17,6 +18,8 @@ struct SimulationOptions {
   std::optional<std::string> payload;     // platform file or plugin name, replaces the scenario's
   std::optional<double> duration_s;       // stop after this much data (<= the trajectory's duration)
   std::function<void(double fraction)> progress;  // called now and then with the fraction done
+  const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): end the data at the last scan
+                                            // written and finish the dataset
 };
 
 // What a run produced.
@@ -38,6 +41,7 @@ struct SimulationSummary {
   double wall_s = 0.0;                // wall-clock seconds taken
   double cpu_s = 0.0;                 // process CPU seconds taken
   std::uintmax_t bytes = 0;           // size of the dataset folder's files
+  bool interrupted = false;           // stopped early by SimulationOptions::stop
 };
 
 // Runs a scenario with a payload and writes the dataset (docs/simulation.md):

@@ -7,6 +7,9 @@
 #include <string>
 
 #include "Commands.hpp"
+#include "NumberChecks.hpp"
+#include "OutputFolder.hpp"
+#include "SignalGuard.hpp"
 #include "io/DatasetConversion.hpp"
 #include "unimap/Errors.hpp"
 
@@ -38,6 +41,8 @@ void PrintReport(const std::string& format, const io::ConversionReport& report, 
 int RunConvert(ConvertOptions options) {
   try {
     io::ConversionOptions& c = options.conversion;
+    c.stop = &SignalGuard::StopFlag();
+    PrepareOutputFolder(c.output, "--out");
     io::ConversionReport report;
     if (options.format == "kitti") {
       report = io::ConvertKitti(c);
@@ -53,7 +58,17 @@ int RunConvert(ConvertOptions options) {
       report = io::ConvertRosbag(c);
     }
     PrintReport(options.format, report, std::cout);
+    if (report.interrupted) {
+      std::cout << "interrupted (signal " << SignalGuard::Received()
+                << "): the dataset holds the messages read before, complete\n";
+    }
     std::cout << "wrote " << c.output.string() << '\n';
+    if (report.scans == 0 && !report.interrupted) {
+      // An empty conversion is no success: nothing in it can be mapped.
+      std::cerr << "error: " << c.input.string() << ": no scan converted: the dataset written holds none"
+                << " (see the counts and notes above)\n";
+      return 2;
+    }
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';
@@ -95,6 +110,10 @@ void AddConvertCommand(CLI::App* app) {
   cmd->add_option("--carmen-fov-deg", options->carmen_fov_deg, "CARMEN: angle the FLASER beams span")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 360.0));
+  cmd->add_option("--carmen-max-time-step-s", c.carmen.max_time_step_s,
+                  "CARMEN: a message stamped more than this after the previous one is a clock jump (an error)")
+      ->capture_default_str()
+      ->check(FinitePositive());
   cmd->add_option("--carmen-range-max-m", c.carmen.range_max_m, "CARMEN: longer ranges are no-returns")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -110,7 +129,8 @@ void AddConvertCommand(CLI::App* app) {
                   "rosbag: nav_msgs/Odometry or geometry_msgs/PoseStamped topic written as groundtruth.tum")
       ->capture_default_str();
   cmd->callback([options]() {
-    const int code = RunConvert(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop reading, finish the dataset, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunConvert(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }

@@ -13,6 +13,9 @@
 #include "MappingRun.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
+#include "NumberChecks.hpp"
+#include "OutputFolder.hpp"
+#include "SignalGuard.hpp"
 #include "TextFormat.hpp"
 #include "TextTable.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
@@ -78,11 +81,17 @@ int RunDemo(const DemoOptions& options) {
     sim::SimulationOptions simulation;
     simulation.out_dir = data;
     if (options.duration_s > 0.0) simulation.duration_s = options.duration_s;
+    simulation.stop = &SignalGuard::StopFlag();
+    PrepareOutputFolder(out, "--out");
     std::cout << "1/3 simulating the paper's tunnel (rotating Hokuyo) into " << data.string() << " ...\n";
     const sim::SimulationSummary s = sim::Simulator(scenario, simulation).Run();
     std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, "
               << s.scans << " scans, in " << Fixed(s.wall_s, 1) << " s\n";
 
+    if (s.interrupted) {
+      std::cout << "interrupted: the dataset holds the first " << Fixed(s.duration_s, 1) << " s\n";
+      return 0;  // the exit code is the signal's (SignalGuard::ExitCode)
+    }
     std::cout << "2/3 mapping it (unimap run) ...\n";
     MappingRunOptions run;
     run.platform_file = s.payload_source;
@@ -91,7 +100,7 @@ int RunDemo(const DemoOptions& options) {
     run.threads = options.threads;
     run.quiet = !isatty(STDERR_FILENO);
     const int code = RunMappingToFolder(run);
-    if (code != 0) return code;
+    if (code != 0 || SignalGuard::Received() != 0) return code;  // stopped: no evaluation of a cut run
 
     std::cout << "3/3 evaluation against the ground truth:\n";
     const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(
@@ -114,10 +123,12 @@ void AddDemoCommand(CLI::App* app) {
       "demo", "Simulate the paper's tunnel, map it with the rotating Hokuyo and compare with the paper");
   cmd->add_option("--out", options->out_dir, "Output folder (default unimap-demo)");
   cmd->add_option("--configs", options->configs, "Folder holding scenarios/ and platforms/ (default: found)");
-  cmd->add_option("--duration-s", options->duration_s, "Simulate only this much of the flight (s)");
+  cmd->add_option("--duration-s", options->duration_s, "Simulate only this much of the flight (s)")
+      ->check(FinitePositive());
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->callback([options]() {
-    const int code = RunDemo(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunDemo(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }

@@ -12,8 +12,12 @@
 #include <vector>
 
 #include "Commands.hpp"
+#include "DatasetChecks.hpp"
 #include "MapEvaluation.hpp"
+#include "NumberChecks.hpp"
+#include "OutputFolder.hpp"
 #include "RunOutputs.hpp"
+#include "SignalGuard.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "map/DistanceMap.hpp"
@@ -39,6 +43,7 @@ struct LocalizeCliOptions {
   bool point_to_plane = false;  // points measured against their nearest surface plane (GpfOptions)
   int threads = 1;              // GPF threads
   bool quiet = false;           // no progress line
+  bool force_payload = false;   // run a dataset recorded for another payload (else an error)
 };
 
 // The initial T_map_body and where it came from.
@@ -141,6 +146,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     // Cheap checks of the arguments first, before the platform and the data are loaded.
     CheckMapFile(options.map_file);
     if (!options.initial_pose.empty()) ParsePose(options.initial_pose);
+    PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
     pipeline::LocalizerOptions localizer_options =
         pipeline::LocalizerOptions::ForPriorMap(CoreParameters::FromMap(platform.parameters));
@@ -160,7 +166,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
       localizer_options.ClampFieldAtLikelihood();
     }
     io::DatasetReader reader(options.data_dir);
-    WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
+    CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);
     const InitialPose initial = ChooseInitialPose(options, reader);
     const std::string attitude = !options.initial_attitude.empty() ? options.initial_attitude
                                  : initial.source == "groundtruth"    ? "pose"
@@ -244,7 +250,10 @@ void AddLocalizeCommand(CLI::App* app) {
                   "Distance-map voxel edge (m) for a .pcd prior map (a .bt map keeps its own), also the "
                   "scan's downsampling voxel (default: the platform's distance_map_resolution_m, at most 0.1)")
       ->check(CLI::Range(0.01, 2.0));
-  cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)");
+  cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)")
+      ->check(FinitePositive());
+  cmd->add_flag("--force-payload", options->force_payload,
+                "Run a dataset recorded for another payload than the platform's (an error otherwise)");
   cmd->add_flag("--point-to-plane", options->point_to_plane,
                 "Measure each scan point against the plane of the map surface nearest to it at the prediction "
                 "instead of the distance field (helps in maps that hold only part of a surface; "
@@ -252,7 +261,8 @@ void AddLocalizeCommand(CLI::App* app) {
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->callback([options]() {
-    const int code = RunLocalize(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunLocalize(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }

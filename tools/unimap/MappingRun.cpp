@@ -4,8 +4,10 @@
 #include <iostream>
 #include <optional>
 
+#include "DatasetChecks.hpp"
 #include "MapOutputs.hpp"
 #include "MotionChoice.hpp"
+#include "OutputFolder.hpp"
 #include "RunOutputs.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
@@ -24,6 +26,7 @@ constexpr const char* kOdometryFile = "trajectory_odometry.tum";
 
 int RunMappingToFolder(const MappingRunOptions& options) {
   try {
+    PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
     pipeline::MapperOptions mapper_options =
         pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
@@ -36,7 +39,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     const MotionChoice motion = ChooseMotion(options.motion, reader);
     mapper_options.localizer.motion.source = motion.source;
     std::cout << "motion: " << motion.name << " (" << motion.reason << ")\n";
-    WarnOnPayloadMismatch(reader, platform.plugin.plugin->Name());
+    CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);
     const std::filesystem::path out(options.out_dir);
     pipeline::Mapper mapper(mapper_options, platform.plugin.plugin);
     // The filter's own estimate streams to trajectory_odometry.tum; the

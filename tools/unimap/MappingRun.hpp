@@ -19,6 +19,7 @@ struct MappingRunOptions {
   bool plane_matching = false;   // odometry matches points against neighbourhood planes only
                                  // (LocalizerOptions::UsePlaneMatching)
   bool trace = false;            // write trace.csv (ScanDiagnostics of every pose)
+  bool force_payload = false;    // run a dataset recorded for another payload (else an error)
   std::string motion = "auto";   // prediction source: auto (what the dataset holds), imu, odometry
                                  // (odometry.csv) or constant-velocity
 };

@@ -5,6 +5,8 @@
 
 #include "Commands.hpp"
 #include "MappingRun.hpp"
+#include "NumberChecks.hpp"
+#include "SignalGuard.hpp"
 
 namespace unimap::cli {
 
@@ -16,7 +18,10 @@ void AddRunCommand(CLI::App* app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", options->out_dir, "Output folder")->required();
-  cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)");
+  cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)")
+      ->check(FinitePositive());
+  cmd->add_flag("--force-payload", options->force_payload,
+                "Run a dataset recorded for another payload than the platform's (an error otherwise)");
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->add_flag("--no-loop-closure", options->no_loop_closure, "Do not search for loop closures");
@@ -38,7 +43,8 @@ void AddRunCommand(CLI::App* app) {
                   "constant-velocity")
       ->check(CLI::IsMember({"auto", "imu", "odometry", "constant-velocity"}));
   cmd->callback([options]() {
-    const int code = RunMappingToFolder(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunMappingToFolder(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }

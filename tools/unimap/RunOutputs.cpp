@@ -6,11 +6,10 @@
 #include "FolderReport.hpp"
 #include "MapEvaluation.hpp"
 #include "PlatformJson.hpp"
+#include "SignalGuard.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -121,13 +120,6 @@ JsonObject StageTimesJson(const pipeline::StageTimes& t, double processing_s, bo
   return o;
 }
 
-void WarnOnPayloadMismatch(const io::DatasetReader& reader, const std::string& payload) {
-  if (!reader.metadata().payload.empty() && reader.metadata().payload != payload) {
-    std::cerr << "warning: dataset was recorded for payload '" << reader.metadata().payload
-              << "', platform uses '" << payload << "'\n";
-  }
-}
-
 void PrintRunProgress(const pipeline::RunProgress& p) {
   const double rtf = p.wall_s > 0.0 ? p.data_time_s / p.wall_s : 0.0;
   std::fprintf(stderr, "\r%zu scans | %.0f scans/s | %.1fx real time", p.scans,
@@ -153,7 +145,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run.Add("scans", in.stats.scans);
   run.Add("poses", summary.poses_written);
   run.Add("peak_rss_mb", summary.peak_rss_mb);
-  run.Add("interrupted", summary.interrupted);
+  run.Add("interrupted", summary.interrupted || SignalGuard::Received() != 0);
   run.Add("error", summary.error);
   run.Add("platform", in.platform_file);
   run.Add("payload", in.payload);
@@ -244,9 +236,6 @@ int WriteRunOutputs(const RunOutputsInput& in) {
 }
 
 namespace {
-std::atomic<bool> g_stop{false};
-extern "C" void OnSigint(int /*signal*/) { g_stop.store(true); }
-
 std::string TraceHeader() {
   return "# time_s,matched,points,points_used,points_unseen,ess,mahalanobis_sq,inflation,inlier_share,"
          "corr_x,corr_y,corr_z,corr_rx,corr_ry,corr_rz,pred_sd_x,pred_sd_y,pred_sd_z,pred_sd_rx,pred_sd_ry,"
@@ -311,12 +300,9 @@ pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventS
     run_options.on_pose = [&trace_file](const pipeline::ScanPose& pose) { trace_file->Write(TraceLine(pose)); };
   }
   run_options.max_duration_s = max_duration_s;
-  run_options.stop = &g_stop;
+  run_options.stop = &SignalGuard::StopFlag();
   if (!quiet) run_options.on_progress = PrintRunProgress;
-  g_stop.store(false);
-  const auto previous = std::signal(SIGINT, OnSigint);
   const pipeline::RunSummary summary = pipeline::RunDataset(reader, sink, trajectory, run_options);
-  std::signal(SIGINT, previous);
   if (trace_file) trace_file->Commit();
   if (!quiet) std::fprintf(stderr, "\n");
   return summary;

@@ -13,9 +13,6 @@
 
 namespace unimap::cli {
 
-// Warns on stderr when the dataset was recorded for another payload than the platform's.
-void WarnOnPayloadMismatch(const io::DatasetReader& reader, const std::string& payload);
-
 // Everything a finished run reports.
 struct RunOutputsInput {
   std::filesystem::path out_dir;       // holds trajectory.tum (written by the run); gets run.json etc.
@@ -70,7 +67,7 @@ RunOutputsInput MakeRunOutputsInput(const std::filesystem::path& out_dir, const 
 
 // Runs the sink (Localizer or Mapper) over the dataset, streaming its poses
 // into out_dir/trajectory_file (creating out_dir), with a progress line
-// unless quiet; Ctrl-C stops the run and keeps what was processed. With
+// unless quiet; a SignalGuard's signal stops the run and keeps what was processed. With
 // trace, every pose's ScanDiagnostics also go to out_dir/trace.csv.
 pipeline::RunSummary RunSinkToFolder(io::DatasetReader& reader, pipeline::EventSink& sink,
                                      const std::filesystem::path& out_dir, const std::string& trajectory_file,

@@ -9,6 +9,9 @@
 #include <string>
 
 #include "Commands.hpp"
+#include "NumberChecks.hpp"
+#include "OutputFolder.hpp"
+#include "SignalGuard.hpp"
 #include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "ScenarioVariant.hpp"
@@ -59,6 +62,8 @@ int RunSimulate(const SimulateOptions& options) {
     run.seed = options.seed;
     run.payload = options.payload;
     run.duration_s = options.duration_s;
+    run.stop = &SignalGuard::StopFlag();
+    PrepareOutputFolder(options.out, "--out");
     if (show_progress) {
       run.progress = [](double fraction) {
         std::fprintf(stderr, "\rsimulating %3d %%", static_cast<int>(100.0 * fraction));
@@ -71,6 +76,10 @@ int RunSimulate(const SimulateOptions& options) {
         sim::WriteWorldMap(scenario, sim::Simulator::LoadPayload(summary.payload_source), summary.duration_s,
                            std::filesystem::path(options.out) / sim::kWorldMapFile);
     PrintSummary(summary, options.scenario, options.out);
+    if (summary.interrupted) {
+      std::cout << "interrupted: the dataset holds the first " << Fixed(summary.duration_s, 1)
+                << " s, complete (signal " << SignalGuard::Received() << ")\n";
+    }
     std::cout << "true map   " << world_map.points << " points from " << world_map.viewpoints
               << " viewpoints, rays to " << Fixed(world_map.max_range_m, 0) << " m, " << Fixed(world_map.wall_s, 2)
               << " s: " << world_map.file.string() << '\n';
@@ -98,14 +107,15 @@ void AddSimulateCommand(CLI::App* app) {
   cmd->add_option("--payload", options->payload,
                   "Platform YAML or plugin name (its defaults) instead of the scenario's payload");
   cmd->add_option("--duration-s", options->duration_s, "Simulate only the first T seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(FinitePositive());
   cmd->add_option("--speed-scale", options->variant.speed_scale,
                   "The same path S times as fast (speed and yaw rate x S, acceleration x S^2, dwells / S)");
   cmd->add_option("--imu-noise-scale", options->variant.imu_noise_scale, "IMU white noise x K");
   cmd->add_option("--imu-bias-scale", options->variant.imu_bias_scale, "IMU start biases and bias walks x B");
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->callback([options]() {
-    const int code = RunSimulate(*options);
+    const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: end the data there, finish the dataset, exit 128 + signal
+    const int code = SignalGuard::ExitCode(RunSimulate(*options));
     if (code != 0) throw CLI::RuntimeError(code);
   });
 }

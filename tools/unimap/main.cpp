@@ -27,6 +27,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const std::exception& e) {
+    // The last resort: the commands report their own errors; an exception
+    // reaching here is a bug, but still a message and an exit code, not an abort.
+    std::cerr << "error: " << e.what() << '\n';
+    return 1;
   }
   return 0;
 }

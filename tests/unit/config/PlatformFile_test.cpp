@@ -148,6 +148,32 @@ TEST(PlatformFileTest, DuplicateParameterNamesTheFirstLine) {
                    "set twice (first on line 4)");
 }
 
+TEST(PlatformFileTest, YamlAliasCyclesAreErrorsNotEndlessRecursion) {
+  // A group holding an alias to itself, directly or through a child group.
+  ExpectParseError("plugin: x\nparameters: &a\n  g: *a\n", 3, "g", "a cycle");
+  ExpectParseError("plugin: x\nparameters:\n  g: &a\n    h:\n      k: *a\n", 5, "g.h.k", "a cycle");
+  // A list holding itself is a list element that is not a number.
+  ExpectParseError("plugin: x\nparameters:\n  x: &a [*a]\n", 3, "x", "element 1 is a list");
+  // An alias to a group elsewhere is fine: its keys are repeated under the new name.
+  const PlatformFile file =
+      PlatformFile::Parse("plugin: x\nparameters:\n  a: &g\n    k: 1\n  b: *g\n", "inline.yaml");
+  ASSERT_EQ(file.overrides().size(), 2u);
+  EXPECT_EQ(file.overrides()[1].key, "b.k");
+}
+
+TEST(PlatformFileTest, AliasExpansionIsBounded) {
+  // Ten groups of ten aliases to the previous group: 10^10 keys if expanded.
+  std::string text = "plugin: x\nparameters:\n  l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9, j: 10}\n";
+  for (int level = 1; level <= 10; ++level) {
+    const std::string previous = "*l" + std::to_string(level - 1);
+    text += "  l" + std::to_string(level) + ": &l" + std::to_string(level) + " {";
+    for (char c = 'a'; c <= 'j'; ++c) text += std::string(c == 'a' ? "" : ", ") + c + ": " + previous;
+    text += "}\n";
+  }
+  const ConfigError e = ParseError(text);
+  EXPECT_TRUE(Contains(e.reason(), "more than 10000 parameters")) << e.what();
+}
+
 TEST(PlatformFileTest, ReadsFilesAndNamesThemInErrors) {
   const fs::path folder =
       fs::temp_directory_path() / ("unimap_platform_file_test_" + std::to_string(getpid()));

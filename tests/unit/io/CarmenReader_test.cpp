@@ -196,6 +196,42 @@ TEST(CarmenReaderTest, NonNumericFieldIsAnErrorNamingTheLine) {
       InputError);
 }
 
+// The InputError message of reading the whole log (a failure if none).
+std::string ReadAllError(const fs::path& file) {
+  try {
+    CarmenReader reader(file);
+    ReadAll(&reader);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError for " << file;
+  return {};
+}
+
+TEST(CarmenReaderTest, HugeOrJumpingTimestampIsAnErrorNamingTheLine) {
+  test::ScratchFolder dir;
+  const fs::path file = dir.path() / "clock.clf";
+  // Before, a 1e300 stamp made the dataset last 1e300 s and the later scans were dropped unnamed.
+  WriteText(file,
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 10.1 host 10.1\n"
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1e300 host 10.2\n"
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 10.3 host 10.3\n");
+  EXPECT_NE(ReadAllError(file).find("clock.clf:2: ipc timestamp 1e+300 s is beyond +-1e+10 s"), std::string::npos)
+      << ReadAllError(file);
+  WriteText(file,
+            "ODOM 1 2 3 0 0 0 10.0 host 10.0\n"
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 10.1 host 10.1\n"
+            "ODOM 1 2 3 0 0 0 1000010.2 host 10.2\n");
+  EXPECT_NE(ReadAllError(file).find("clock.clf:3: ipc timestamp 1000010.2 s jumps "), std::string::npos)
+      << ReadAllError(file);
+  // The Intel log's real 3.5 s pause is well within the 60 s limit.
+  WriteText(file,
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 10.1 host 10.1\n"
+            "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 13.6 host 13.6\n");
+  CarmenReader reader(file);
+  EXPECT_EQ(ReadAll(&reader).scans, 2u);
+}
+
 TEST(CarmenReaderTest, TruncatedLastLineIsACountedSkip) {
   test::ScratchFolder dir;
   const fs::path file = dir.path() / "cut.clf";

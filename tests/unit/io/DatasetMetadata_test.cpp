@@ -155,6 +155,21 @@ TEST(DatasetMetadata, BadValuesNameTheirKeyAndLine) {
   EXPECT_GT(LoadError(folder, "format_version: 1\npayload: [x\n").line(), 0);
 }
 
+TEST(DatasetMetadata, YamlAliasCyclesAreErrorsNotEndlessRecursion) {
+  test::ScratchFolder folder;
+  const ConfigError direct =
+      LoadError(folder, "format_version: 1\npayload: x\npayload_parameters: &a\n  g: *a\n");
+  EXPECT_EQ(direct.key(), "g");
+  EXPECT_EQ(direct.line(), 4);
+  EXPECT_NE(direct.reason().find("a cycle"), std::string::npos) << direct.what();
+  // The whole file as its own payload_parameters.
+  const ConfigError root = LoadError(folder, "&r\nformat_version: 1\npayload: x\npayload_parameters: *r\n");
+  EXPECT_NE(root.reason().find("a cycle"), std::string::npos) << root.what();
+  // A list holding itself.
+  const ConfigError list = LoadError(folder, "format_version: 1\npayload: x\npayload_parameters:\n  x: &a [*a]\n");
+  EXPECT_NE(list.reason().find("element 1 is a list"), std::string::npos) << list.what();
+}
+
 TEST(DatasetMetadata, MissingFileIsAConfigError) {
   test::ScratchFolder folder;
   EXPECT_THROW(LoadDatasetMetadata(folder / "metadata.yaml"), ConfigError);

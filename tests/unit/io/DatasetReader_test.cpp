@@ -15,6 +15,10 @@ namespace unimap::io {
 namespace {
 
 using test::ScratchFolder;
+
+// These tests are about the format (a bit-exact round trip of any double,
+// extremes included): the plausibility limits are tested in DatasetLimits_test.
+const DatasetLimits kFormatOnly = DatasetLimits::Unlimited();
 using test::ValueSource;
 
 DatasetMetadata Meta() {
@@ -87,7 +91,7 @@ std::string ErrorOf(Read read) {
 }
 
 void ReadAll(const std::filesystem::path& folder) {
-  DatasetReader reader(folder);
+  DatasetReader reader(folder, kFormatOnly);
   while (reader.NextEvent()) {
   }
 }
@@ -96,7 +100,7 @@ TEST(DatasetReader, AllStreamsRoundTripBitExactly) {
   ScratchFolder folder;
   const Contents written = RandomContents(1);
   Write(folder.path(), written);
-  DatasetReader reader(folder.path());
+  DatasetReader reader(folder.path(), kFormatOnly);
   EXPECT_EQ(reader.metadata().payload_parameters, Meta().payload_parameters);
   EXPECT_EQ(reader.metadata().seed, 42u);
   EXPECT_TRUE(reader.has_groundtruth());
@@ -139,7 +143,7 @@ TEST(DatasetReader, NextEventMergesStreamsByTimeWithTiesInStreamOrder) {
     expected.emplace_back(ScanEndTime(c.scans[i]), 3, i);
   }
   std::sort(expected.begin(), expected.end());
-  DatasetReader reader(folder.path());
+  DatasetReader reader(folder.path(), kFormatOnly);
   for (const auto& [time_s, stream, index] : expected) {
     const auto event = reader.NextEvent();
     ASSERT_TRUE(event.has_value());
@@ -164,7 +168,7 @@ TEST(DatasetReader, PerStreamCallsAfterNextEventReturnTheHeldItemFirst) {
   writer.WriteEncoder({2.0, 0.5});
   writer.WriteEncoder({3.0, 0.6});
   writer.Finish();
-  DatasetReader reader(folder.path());
+  DatasetReader reader(folder.path(), kFormatOnly);
   ASSERT_TRUE(std::holds_alternative<ImuSample>(*reader.NextEvent()));  // encoder 2.0 now held
   EXPECT_EQ(reader.NextEncoder()->time_s, 2.0);
   EXPECT_EQ(reader.NextEncoder()->time_s, 3.0);
@@ -198,7 +202,7 @@ TEST(DatasetReader, NonUnitQuaternionNamesFileAndLine) {
   Write(folder.path(), RandomContents(4));
   test::WriteText(folder / "odometry.csv", "# t x y z qx qy qz qw\n0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 2\n");
   const std::string error = ErrorOf([&] {
-    DatasetReader reader(folder.path());
+    DatasetReader reader(folder.path(), kFormatOnly);
     while (reader.NextOdometry()) {
     }
   });
@@ -207,14 +211,14 @@ TEST(DatasetReader, NonUnitQuaternionNamesFileAndLine) {
 
 TEST(DatasetReader, MissingOrIncompleteDatasetsGiveClearErrors) {
   ScratchFolder folder;
-  EXPECT_NE(ErrorOf([&] { DatasetReader reader(folder / "nowhere"); }).find("no such dataset"),
+  EXPECT_NE(ErrorOf([&] { DatasetReader reader(folder / "nowhere", kFormatOnly); }).find("no such dataset"),
             std::string::npos);
   test::WriteText(folder / "imu.csv", "0 0 0 0 0 0 0\n");
   test::WriteText(folder / "metadata.yaml.partial", "format_version: 1\npayload: x\n");
-  EXPECT_NE(ErrorOf([&] { DatasetReader reader(folder.path()); }).find("no metadata.yaml"),
+  EXPECT_NE(ErrorOf([&] { DatasetReader reader(folder.path(), kFormatOnly); }).find("no metadata.yaml"),
             std::string::npos);
   test::WriteText(folder / "metadata.yaml", "format_version: 2\npayload: x\n");
-  EXPECT_THROW(DatasetReader reader(folder.path()), ConfigError);
+  EXPECT_THROW(DatasetReader reader(folder.path(), kFormatOnly), ConfigError);
 }
 
 TEST(DatasetReader, PartialFilesAreIgnored) {
@@ -223,7 +227,7 @@ TEST(DatasetReader, PartialFilesAreIgnored) {
   writer.WriteImu(ImuSample{1.0, {}, {}});
   writer.Finish();
   test::WriteText(folder / "encoder.csv.partial", "0 0\n");
-  DatasetReader reader(folder.path());
+  DatasetReader reader(folder.path(), kFormatOnly);
   EXPECT_FALSE(reader.NextEncoder());
   EXPECT_TRUE(std::holds_alternative<ImuSample>(*reader.NextEvent()));
   EXPECT_FALSE(reader.NextEvent());
@@ -245,7 +249,7 @@ TEST(DatasetReader, StreamsALargeScanFile) {
   const std::uintmax_t size = std::filesystem::file_size(file);
   ASSERT_EQ(size, 12u + kScans * (5u + 21u + 256u * 38u));
   ValueSource v(5);  // regenerates the same scans
-  DatasetReader reader(folder.path());
+  DatasetReader reader(folder.path(), kFormatOnly);
   test::ExpectSameScan(test::RandomRaw(v, 0.0, 256), *reader.NextScan());
   std::filesystem::resize_file(file, size - 100);  // cuts into the last record
   for (int i = 1; i < kScans - 1; ++i) {

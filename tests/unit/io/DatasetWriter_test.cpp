@@ -107,7 +107,7 @@ TEST(DatasetWriter, MalformedItemsAreRejected) {
   EXPECT_THROW(writer.WriteGroundTruth(truth), InputError);
 }
 
-TEST(DatasetWriter, UnfinishedWriterLeavesOnlyPartialFiles) {
+TEST(DatasetWriter, UnfinishedWriterLeavesNothing) {
   test::ScratchFolder folder;
   {
     DatasetWriter writer(folder.path(), Meta());
@@ -116,11 +116,12 @@ TEST(DatasetWriter, UnfinishedWriterLeavesOnlyPartialFiles) {
     writer.WriteOdometry(OdometrySample{});
     writer.WriteScan(Raw(0.0, 0.1));
     writer.WriteGroundTruth(StampedPose{});
-  }  // destroyed without Finish()
-  EXPECT_EQ(FilesIn(folder.path()),
-            (std::set<std::string>{"imu.csv.partial", "encoder.csv.partial",
-                                   "odometry.csv.partial", "scans.bin.partial",
-                                   "groundtruth.tum.partial"}));
+    EXPECT_EQ(FilesIn(folder.path()),
+              (std::set<std::string>{"imu.csv.partial", "encoder.csv.partial",
+                                     "odometry.csv.partial", "scans.bin.partial",
+                                     "groundtruth.tum.partial"}));
+  }  // destroyed without Finish() (an error, a full disk): the .partial files go too
+  EXPECT_EQ(FilesIn(folder.path()), std::set<std::string>{});
   try {
     DatasetReader reader(folder.path());
     FAIL() << "an unfinished dataset was opened";

@@ -1,0 +1,17 @@
+#pragma once
+// Internal to unimap_io: a structural check of a ROS 1 bag (format 2.0)
+// before librosbag_storage opens it. librosbag trusts the lengths it reads
+// and allocates them (a corrupt length: a 4 GiB malloc, found by fuzzing).
+#include <filesystem>
+
+namespace unimap::io {
+
+// Walks the top-level records of the bag: "#ROSBAG V2.0\n", then per record
+// a u32 header length, the header (fields: u32 length, "name=value"), a u32
+// data length and the data. Throws InputError "<bag>: record at byte B: <reason>"
+// when a length runs past the end of the file or its header, a field has
+// no '=', or a chunk announces more than 1 GiB uncompressed (or, stored
+// uncompressed, another size than its data).
+void CheckRosbagRecords(const std::filesystem::path& bag);
+
+}  // namespace unimap::io
