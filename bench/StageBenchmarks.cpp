@@ -127,7 +127,7 @@ void BM_Match(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(gpf.Match(in.body_poses[i], covariance, in.body_scans[i], query,
-                                       in.options.line_max_predicted_distance_m));
+                                       in.options.max_predicted_distance_m));
     i = (i + 1) % in.body_scans.size();
   }
   state.SetItemsProcessed(state.iterations());

@@ -16,7 +16,7 @@ struct MotionPrediction {
 };
 
 // Predicts the body's motion between scans for data without an IMU (the
-// localiser's other motion sources, DESIGN.md 1.2): wheel-odometry
+// localiser's other motion sources, docs/design.md 1.2): wheel-odometry
 // increments or a constant-velocity model. Not thread-safe.
 class MotionPrior {
  public:

@@ -30,7 +30,7 @@ struct LoopClosureResult {
   int candidates = 0;      // search maxima refined
 };
 
-// Loop closure of a scan against a retired submap (DESIGN.md 1.5):
+// Loop closure of a scan against a retired submap (docs/design.md 1.5):
 // 1. search: branch and bound (LoopClosureSearch) over x, y, z and yaw on the
 //    coarse SubmapMatchGrid with a voxel-filtered subset of the scan, in a
 //    window of radius search_radius_m + ambiguity_margin_m (xy),

@@ -1,6 +1,7 @@
 #include "map/OccupancyTree.hpp"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,20 @@ OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree,
   if (options_.subvoxel_surfaces) surfaces_ = std::make_unique<SurfacePoints>(resolution_m_, options_.signed_surfaces);
   ApplySensorModel();
   if (!tracks_occupied_) return;
+  // A leaf above the finest depth stands for size^3 voxels, each tracked
+  // below: refuse a tree that would expand past kMaxExpandedVoxels (a
+  // damaged or hostile file: a leaf at depth 1 covers 2^45 voxels) before
+  // allocating any.
+  std::uint64_t voxels = 0;
+  ForEachOccupiedLeaf(*tree_, nullptr, [&voxels](const Eigen::Vector3i&, int size) {
+    const auto edge = static_cast<std::uint64_t>(size);
+    voxels = std::min<std::uint64_t>(voxels + edge * edge * edge, kMaxExpandedVoxels + 1);
+  });
+  if (voxels > kMaxExpandedVoxels) {
+    throw InputError("octree: its occupied leaves cover more than " + std::to_string(kMaxExpandedVoxels) +
+                     " voxels of " + std::to_string(resolution_m_) +
+                     " m (coarse occupied leaves near the root); not a surface map");
+  }
   ForEachOccupiedLeaf(*tree_, nullptr, [this](const Eigen::Vector3i& min_key, int size) {
     for (int dx = 0; dx < size; ++dx) {
       for (int dy = 0; dy < size; ++dy) {

@@ -25,11 +25,15 @@ namespace unimap::map {
 class OccupancyTree {
  public:
   using KeySetType = std::unordered_set<std::uint64_t>;  // packed voxel keys
+  // An adopted tree's occupied leaves may cover at most this many voxels
+  // (the tracked set costs ~40 bytes each: 2 GB).
+  static constexpr std::uint64_t kMaxExpandedVoxels = 50000000;
 
   // An empty tree at options.resolution_m.
   explicit OccupancyTree(const DistanceMapOptions& options);
   // Adopts tree (its resolution wins over options.resolution_m) and applies
-  // the occupancy probabilities of options. Throws InputError on null.
+  // the occupancy probabilities of options. Throws InputError on null or
+  // when its occupied leaves cover more than kMaxExpandedVoxels.
   OccupancyTree(std::unique_ptr<octomap::OcTree> tree, const DistanceMapOptions& options);
   ~OccupancyTree();
   OccupancyTree(const OccupancyTree&) = delete;

@@ -21,8 +21,8 @@ struct RetiredSubmap {
   MapUpdateTimes update_times;                                 // its map's update times, summed
 };
 
-// One submap (DESIGN.md 1.4): an occupancy octree with its incremental
-// distance map, in the local odometry frame, and the frame it was created
+// One submap (docs/design.md 1.4): its surface, occupancy and incremental
+// distance map (SurfaceDistanceMap), in the local odometry frame, and the frame it was created
 // in (at the sensor, axes of the local frame). Not thread-safe on its own:
 // SubmapManager serialises access.
 class Submap {

@@ -19,14 +19,14 @@ struct SubmapInsertion {
   std::vector<Eigen::Isometry3d> created_T_local_submaps;  // their frames, same order
 };
 
-// The paper's active submaps (DESIGN.md 1.4, Cartographer's scheme): every 3D
+// The paper's active submaps (docs/design.md 1.4, Cartographer's scheme): every 3D
 // scan goes into the matching submap (the oldest live one, which the
 // localiser matches against) and the growing one. When the newest submap has
 // received M / 2 scans a new growing submap starts; when the matching one has
 // received M it is retired (its live distance map dropped, its surface kept)
 // and the growing one becomes the matching one. A new submap's frame is at
 // the sensor position of the scan that starts it. Only the matching submap
-// keeps a distance transform: a growing one updates its octree alone and
+// keeps a distance transform: a growing one updates its surface alone and
 // builds its distances when it becomes the matching one. Thread-safe.
 class SubmapManager : public ScanMap {
  public:

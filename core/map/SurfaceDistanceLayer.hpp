@@ -35,7 +35,7 @@ struct SurfaceDistanceCounts {
 };
 
 // The surface of a map and the distances to it, kept up to date at the cost
-// of what changed (docs/mapping.md, "Distance map").
+// of what changed (docs/design.md 1.4).
 //
 // Surface: returns go into per-voxel surface elements (SurfacePoints: mean,
 // plane, view); each voxel keeps an occupancy log-odds (OctoMap's model and

@@ -24,7 +24,7 @@ struct SurfaceDistanceMapStats {
   double insert_s = 0.0;             // time integrating scans (surfaces and distances, wall)
 };
 
-// The odometry map of a submap (docs/mapping.md, "Distance map"): a
+// The odometry map of a submap (docs/design.md 1.4): a
 // SurfaceDistanceLayer updated on a background thread. InsertScan queues a
 // scan and returns; the worker integrates queued scans in order and
 // publishes a new immutable DistanceField (the blocks within
@@ -33,8 +33,9 @@ struct SurfaceDistanceMapStats {
 // options.compute_distances false only the surface is kept until
 // EnableDistances(). Distances are unsigned, to the sub-voxel surface
 // elements, exact up to options.clamp_distance_m. Returns farther than
-// options.max_insert_range_m from the sensor are not inserted. There is no
-// free-space carving: a submap lives for M 3D scans. Thread-safe.
+// options.max_insert_range_m from the sensor are not inserted. Rays carve
+// free space only through blocks holding an occupied voxel
+// (DistanceMapOptions::raycast_free_space, clear_occupied_only). Thread-safe.
 class SurfaceDistanceMap : public ScanMap {
  public:
   // Throws ConfigError when the options are invalid.

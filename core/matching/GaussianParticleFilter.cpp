@@ -45,16 +45,16 @@ std::vector<Eigen::Vector3f> ToMap(const Eigen::Isometry3d& T_map_body, const st
   return points_map;
 }
 
-// Removes the points farther than max_distance_m from the map at the
-// predicted pose from *points; returns how many.
+// Removes the points farther than max_distance_m + per_range * (the point's
+// range) from the map at the predicted pose from *points; returns how many.
 int DropUnseen(const Eigen::Isometry3d& T_map_body_predicted, const DistanceQuery& field, double max_distance_m,
-               std::vector<Eigen::Vector3f>* points) {
+               double per_range, std::vector<Eigen::Vector3f>* points) {
   const std::vector<Eigen::Vector3f> points_map = ToMap(T_map_body_predicted, *points);
   std::vector<float> distances(points->size());
   field.Distances(points_map.data(), static_cast<int>(points_map.size()), distances.data());
   std::size_t kept = 0;
   for (std::size_t i = 0; i < points->size(); ++i) {
-    if (distances[i] <= max_distance_m) (*points)[kept++] = (*points)[i];
+    if (distances[i] <= max_distance_m + per_range * (*points)[i].norm()) (*points)[kept++] = (*points)[i];
   }
   const int dropped = static_cast<int>(points->size() - kept);
   points->resize(kept);
@@ -105,23 +105,26 @@ GaussianParticleFilter::~GaussianParticleFilter() = default;
 GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_predicted,
                                         const Matrix6d& predicted_covariance,
                                         const std::vector<Eigen::Vector3f>& points_body,
-                                        const DistanceQuery& field, double max_predicted_distance_m) {
-  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m, nullptr);
+                                        const DistanceQuery& field, double max_predicted_distance_m,
+                                        double max_predicted_distance_per_range) {
+  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m,
+                   max_predicted_distance_per_range, nullptr);
 }
 
 GpfResult GaussianParticleFilter::MatchFrom(const Eigen::Isometry3d& T_map_body_predicted,
                                             const Matrix6d& predicted_covariance,
                                             const std::vector<Eigen::Vector3f>& points_body,
                                             const DistanceQuery& field, double max_predicted_distance_m,
-                                            const Vector6d& start) {
-  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m, &start);
+                                            const Vector6d& start, double max_predicted_distance_per_range) {
+  return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m,
+                   max_predicted_distance_per_range, &start);
 }
 
 GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_predicted,
                                             const Matrix6d& predicted_covariance,
                                             const std::vector<Eigen::Vector3f>& points_body,
                                             const DistanceQuery& field, double max_predicted_distance_m,
-                                            const Vector6d* start) {
+                                            double max_predicted_distance_per_range, const Vector6d* start) {
   GpfResult result;
   // Where the points are looked up before matching: the prediction, or the start given.
   const Eigen::Isometry3d T_map_body_gate =
@@ -141,7 +144,8 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
     points.clear();
   }
   if (max_predicted_distance_m > 0.0 && !points.empty()) {
-    result.points_unseen = DropUnseen(T_map_body_gate, field, max_predicted_distance_m, &points);
+    result.points_unseen = DropUnseen(T_map_body_gate, field, max_predicted_distance_m, max_predicted_distance_per_range,
+                                     &points);
     unmeasured += result.points_unseen;
   }
   if (points.empty() && plane_points.empty()) {

@@ -44,20 +44,22 @@ class GaussianParticleFilter {
   ~GaussianParticleFilter();
 
   // max_predicted_distance_m > 0: the (field) points farther than this
-  // from the map at the predicted pose are not measured, only counted in
+  // (plus max_predicted_distance_per_range times the point's range in the
+  // body) from the map at the predicted pose are not measured, only counted in
   // the scan's n (ScanLikelihood): they look at surfaces the map has not
   // seen yet, and measured against the nearest one it has they pull the
   // pose towards it.
   GpfResult Match(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
                   const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
-                  double max_predicted_distance_m = 0.0);
+                  double max_predicted_distance_m = 0.0, double max_predicted_distance_per_range = 0.0);
   // The same without particles, from a pose error found otherwise (a wide
   // search, pipeline::Reacquirer): the points are gated at the prediction
   // moved by start, and the Gauss-Newton refinement (at least 5 steps)
   // starts there, on the same posterior (prior N(0, predicted_covariance)).
   GpfResult MatchFrom(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
                       const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
-                      double max_predicted_distance_m, const Vector6d& start);
+                      double max_predicted_distance_m, const Vector6d& start,
+                      double max_predicted_distance_per_range = 0.0);
 
   const GpfOptions& options() const { return options_; }
 
@@ -79,7 +81,8 @@ class GaussianParticleFilter {
                        GpfResult result) const;
   GpfResult MatchImpl(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
                       const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
-                      double max_predicted_distance_m, const Vector6d* start);
+                      double max_predicted_distance_m, double max_predicted_distance_per_range,
+                      const Vector6d* start);
   GpfOptions options_;
   std::mt19937_64 rng_;
   std::uint64_t scans_matched_ = 0;

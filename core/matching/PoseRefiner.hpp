@@ -23,7 +23,7 @@ struct PoseRefinement {
 };
 
 // Gauss-Newton refinement of a pose error on a distance field: minimises the
-// negative log posterior the GPF samples (DESIGN.md 1.3), the Gaussian prior
+// negative log posterior the GPF samples (docs/design.md 1.3), the Gaussian prior
 // N(prior_mean, P) plus the tempered scan likelihood of ScanLikelihood,
 //   C(e) = 1/2 (e - m)' P^-1 (e - m) + (E / n) / (2 sigma^2) sum_i min(d_i(e), clamp)^2,
 // with d_i(e) the distance of body point i at T(e) = (t + dp, R Exp(dtheta)).

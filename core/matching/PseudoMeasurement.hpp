@@ -15,7 +15,7 @@ struct PseudoMeasurement {
 };
 
 // Recovers the measurement that, fed to a Kalman update whose prior is the
-// sample prior N(mu_s, S_s), yields the posterior N(mu_p, S_p) (DESIGN.md 1.3):
+// sample prior N(mu_s, S_s), yields the posterior N(mu_p, S_p) (docs/design.md 1.3):
 //   R = (S_p^-1 - S_s^-1)^-1,  K = S_s (S_s + R)^-1,  z = K^-1 (mu_p - mu_s) + mu_s.
 // Non-positive eigenvalues of the information gain S_p^-1 - S_s^-1 (the scan
 // told nothing in that direction) are raised to min_information_ratio times

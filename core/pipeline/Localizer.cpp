@@ -276,7 +276,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   points_body.reserve(body.points.size());
   for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
 
-  // GPF -> pseudo measurement -> ESKF update (DESIGN.md 1.3). The state may
+  // GPF -> pseudo measurement -> ESKF update (docs/design.md 1.3). The state may
   // be a few ms past t_end (waiting for the encoder): the pose error is
   // applied to the current state.
   const Eigen::Isometry3d T_predicted = history_.At(t_ref);

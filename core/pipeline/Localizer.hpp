@@ -61,7 +61,7 @@ struct LocalizerStats {
   StageTimes times;                   // the localiser's stages (map stages: the map's UpdateTimes)
 };
 
-// Odometry-mode localiser (DESIGN.md 1.1-1.3): IMU -> ESKF prediction; each
+// Odometry-mode localiser (docs/design.md 1.1-1.3): IMU -> ESKF prediction; each
 // scan is deskewed by the payload plugin, matched by the GPF against the
 // distance map, and its pseudo measurement updates the ESKF; every N scans
 // form a 3D scan inserted into the map (unless localising in a prior map).

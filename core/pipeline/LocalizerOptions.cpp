@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+
 namespace unimap::pipeline {
 
 bool LocalizerOptions::IsValid(std::string* why) const {
@@ -39,8 +40,12 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     *why = "line_gap_fill: " + inner;
     return false;
   }
-  if (!(line_max_predicted_distance_m >= 0.0)) {
-    *why = "line_max_predicted_distance_m must be >= 0";
+  if (!(sweep_gate_sigmas >= 0.0)) {
+    *why = "sweep_gate_sigmas must be >= 0";
+    return false;
+  }
+  if (!(max_predicted_distance_m >= 0.0)) {
+    *why = "max_predicted_distance_m must be >= 0";
     return false;
   }
   if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
@@ -81,9 +86,10 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // the gate 0.382 / 0.488 / 0.245 m. An error larger than the gate cannot
   // be corrected by the points it leaves out: at 1 voxel the tunnel slipped
   // 3.5 m while hovering (ATE 1.46 m; hallway 0.075 / 0.093 / 0.050 m).
-  // A 3D LiDAR's scans keep every point: with 2 voxels the corridor's ATE
-  // (fixed VLP-16) went from 0.072 to 0.204 m.
-  o.line_max_predicted_distance_m = 1.5 * core.distance_map_resolution_m;
+  // 3D sweeps use the same gate widened by sweep_gate_sigmas of the
+  // prediction (ScanMatcher), so an uncertain prediction keeps its points
+  // (docs/robustness.md: tunnel, fixed VLP-16, ATE 2.23 -> 1.32 m).
+  o.max_predicted_distance_m = 1.5 * core.distance_map_resolution_m;
   // Gauss-Newton refinement of every GPF match (PoseRefiner): the plain
   // GPF's Monte-Carlo noise (ESS near K when the tempered likelihood is
   // flatter than the prediction) made the hallway (rotating Hokuyo) diverge
@@ -97,8 +103,7 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // memory and accuracy of both in docs/mapping.md, "Distance map clamp").
   o.ClampFieldAtLikelihood();
   // Every match is refined by Gauss-Newton, so the particles only place its
-  // start: 100 do that as well as 500 at a fifth of the time (docs/mapping.md,
-  // "Particles").
+  // start, which 100 do at a fifth of the time of 500 (docs/design.md 1.3).
   o.gpf.num_particles = 100;
   return o;
 }
@@ -126,7 +131,7 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // centres). The map is complete: every line point is measured.
   o.map.subvoxel_surfaces = true;
   o.map.signed_surfaces = true;
-  o.line_max_predicted_distance_m = 0.0;
+  o.max_predicted_distance_m = 0.0;
   // The field is computed once, not grown, so the coarse grid a payload maps
   // with for speed (rotating VLP-16: 0.3 m, the paper's patio value) is not
   // needed. Full 912 s tunnel flight, rotating VLP-16 in its true map: at

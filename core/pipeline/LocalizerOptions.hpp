@@ -29,9 +29,12 @@ struct LocalizerOptions {
   double max_initial_accel_bias_m_s2 = 0.3;  // kPose: a larger implied bias means the pose's tilt is
                                              // wrong (1.75 deg at 0.3): gravity alignment is used instead
   int min_points_to_match = 30;     // scans with fewer body points are inserted unmatched
-  double line_max_predicted_distance_m = 0.0;  // > 0: line scans' points farther than this from the
-                                    // map at the predicted pose are not measured (GaussianParticleFilter::
-                                    // Match; FromPlatform: 1.5 voxels). 0: all measured
+  double max_predicted_distance_m = 0.0;  // > 0: points farther than this from the map at the
+                                    // predicted pose are not measured (GaussianParticleFilter::Match;
+                                    // FromPlatform: 1.5 voxels). 0: all measured
+  double sweep_gate_sigmas = 3.0;   // 3D sweeps: the gate above widens by this many sigmas of the
+                                    // prediction (position + range x rotation), so an uncertain
+                                    // prediction keeps its points; line scans use the gate as is
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)

@@ -23,7 +23,7 @@ struct LoopSearchStats {
   std::size_t matchers_built = 0;  // submap matchers constructed (cache misses)
 };
 
-// Finds loop closures for 3D scans among retired submaps (DESIGN.md 1.5):
+// Finds loop closures for 3D scans among retired submaps (docs/design.md 1.5):
 // candidates are retired submaps (not the newest few, which overlap the live
 // ones) whose optimised origin lies within the search radius plus the
 // submap's reach of the scan's world estimate; the radius grows with the

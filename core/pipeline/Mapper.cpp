@@ -64,6 +64,10 @@ std::vector<ScanPose> Mapper::TakePoses() {
 void Mapper::OnKeyScan(KeyScan&& key) {
   const map::SubmapInsertion insertion = submaps_->last_insertion();
   const int k = graph_.AddKeyScan(key.time_s, key.T_local_body, insertion);
+  for (std::size_t i = 0; i < insertion.created_ids.size(); ++i) {
+    submap_starts_[insertion.created_ids[i]] = {key.time_s,
+                                                key.T_local_body.inverse() * insertion.created_T_local_submaps[i]};
+  }
   const Eigen::Vector3d position = key.T_local_body.translation();
   if (k > 0) path_m_ += (position - last_key_position_).norm();
   last_key_position_ = position;
@@ -81,7 +85,7 @@ void Mapper::OnKeyScan(KeyScan&& key) {
     const Eigen::Isometry3d T_world_body = graph_.T_world_local() * key.T_local_body;
     for (const LoopClosure& closure : finder_.Search(k, points_body, T_world_body, path_m_, graph_)) {
       graph_.AddLoopClosure(closure);
-      closures_.push_back({key.time_s, k, closure.submap_id});
+      closures_.push_back({key.time_s, k, closure.submap_id, closure.T_submap_body});
       if (!any_closure_) stats_.first_loop_closure_time_s = key.time_s;
       any_closure_ = true;
     }
@@ -142,7 +146,13 @@ std::vector<LoopClosureLink> Mapper::LoopClosureLinks() const {
   for (const AcceptedClosure& c : closures_) {
     Eigen::Isometry3d T_world_submap = Eigen::Isometry3d::Identity();
     if (!graph_.T_world_submap(c.submap_id, &T_world_submap)) continue;
-    links.push_back({c.time_s, graph_.T_world_key(c.key_scan).translation(), T_world_submap.translation()});
+    LoopClosureLink link{c.time_s, graph_.T_world_key(c.key_scan).translation(), T_world_submap.translation()};
+    const auto start = submap_starts_.find(c.submap_id);
+    if (start != submap_starts_.end()) {
+      link.submap_start_time_s = start->second.time_s;
+      link.T_start_body = start->second.T_body_submap * c.T_submap_body;
+    }
+    links.push_back(link);
   }
   return links;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,14 +34,20 @@ struct MapperStats {
 };
 
 // An accepted loop closure, for drawing: where the closing 3D scan was and
-// the origin of the older submap it matched (world frame, optimised poses).
+// the origin of the older submap it matched (world frame, optimised poses);
+// and, for checking it against ground truth, the motion it claims between
+// the body when the submap was started and the closing scan.
 struct LoopClosureLink {
   double time_s = 0.0;                                  // the closing 3D scan's time
   Eigen::Vector3d scan_world = Eigen::Vector3d::Zero();    // its body position
   Eigen::Vector3d submap_world = Eigen::Vector3d::Zero();  // the matched submap's origin
+  double submap_start_time_s = 0.0;  // time of the key scan that started the submap
+  // Measured: T_start_body = T_start_submap (odometry when the submap was
+  // started) * T_submap_body (the loop-closure match).
+  Eigen::Isometry3d T_start_body = Eigen::Isometry3d::Identity();
 };
 
-// The paper's full system (DESIGN.md 1): wires the Localizer (plugin ->
+// The paper's full system (docs/design.md 1): wires the Localizer (plugin ->
 // deskew -> GPF -> ESKF), the SubmapManager it matches against and inserts
 // into, the TrajectoryGraph (a node per 3D scan and per submap), the
 // LoopClosureFinder and the background pose-graph optimiser. The localiser
@@ -96,7 +103,13 @@ class Mapper : public EventSink {
     double time_s;
     int key_scan;
     int submap_id;
+    Eigen::Isometry3d T_submap_body;  // measured
   };
+  struct SubmapStart {
+    double time_s;                      // key scan that started the submap
+    Eigen::Isometry3d T_body_submap;    // the submap's frame seen from that key scan's body
+  };
+  std::map<int, SubmapStart> submap_starts_;                // by submap id
   std::vector<AcceptedClosure> closures_;                   // for LoopClosureLinks
   MapperStats stats_;
   std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above

@@ -24,9 +24,18 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
                                    const matching::Matrix6d& predicted_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
   const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighbourhood_planes);
-  const double gate_m = line ? options_.line_max_predicted_distance_m : 0.0;
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
   const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
+  // Points far from every mapped surface at the prediction look at what the
+  // map has not seen (past the frontier ahead, above the band a narrow
+  // vertical field of view has mapped); measured against the nearest mapped
+  // surface they pull the pose towards it. A sweep's gate allows for the
+  // prediction's own uncertainty; a line's is fixed (it is never searched).
+  const double gate_m = options_.max_predicted_distance_m > 0.0 && !line
+                            ? options_.max_predicted_distance_m + options_.sweep_gate_sigmas * position_sigma
+                            : options_.max_predicted_distance_m;
+  const double gate_per_range =
+      options_.max_predicted_distance_m > 0.0 && !line ? options_.sweep_gate_sigmas * rotation_sigma : 0.0;
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
                     rotation_sigma > options_.reacquire.wide_sigma_rad;
   ScanMatchResult out;
@@ -35,7 +44,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   // A single 2D line holds too little of the scene to be placed in 6 DOF
   // on its own: line scans are matched around their prediction only.
   if (line) {
-    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m, gate_per_range);
     if (out.match.ok) {
       out.inliers = reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean),
                                             subset);
@@ -43,7 +52,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
     return out;
   }
   if (!wide) {
-    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+    out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m, gate_per_range);
     if (out.match.ok) {
       matched_share =
           reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
@@ -62,7 +71,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
                                         : found.inliers_found >= matched_share + options_.reacquire.min_inlier_gain);
   if (!better) {
     if (wide) {  // nothing better found: match as usual
-      out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m);
+      out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m, gate_per_range);
       if (out.match.ok) {
         out.inliers = reacquirer_.InlierShare(
             *field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
@@ -75,7 +84,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   const double mahalanobis_sq = found.error.dot(predicted_covariance.ldlt().solve(found.error));
   out.inflation = std::max(1.0, mahalanobis_sq / (kCorrectionSigmas * kCorrectionSigmas));
   out.match = gpf_.MatchFrom(T_predicted, out.inflation * predicted_covariance, points_body, query, gate_m,
-                             found.error);
+                             found.error, gate_per_range);
   out.reacquired = out.match.ok;
   out.inliers = found.inliers_found;
   return out;

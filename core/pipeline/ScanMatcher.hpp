@@ -21,7 +21,7 @@ struct ScanMatchResult {
   double inliers = 0.0;       // share of the scan's points on the map at the matched pose
 };
 
-// The localiser's measurement of a scan (DESIGN.md 1.3 with a safety net):
+// The localiser's measurement of a scan (docs/design.md 1.3 with a safety net):
 // the Gaussian particle filter and its refinement around the prediction,
 // unless the prediction is too uncertain for the map's basin (a sensor
 // whose velocity is not known yet) or the match leaves most of the scan off
@@ -34,8 +34,11 @@ class ScanMatcher {
  public:
   explicit ScanMatcher(const LocalizerOptions& options);
 
-  // points_body: the deskewed scan; line: a 2D line scan (its points far
-  // from the map at the prediction are not measured).
+  // points_body: the deskewed scan; line: a 2D line scan. Points farther
+  // from the map at the prediction than LocalizerOptions::
+  // max_predicted_distance_m are not measured; for a sweep (line false)
+  // that limit grows by sweep_gate_sigmas of the prediction (position, and
+  // the point's range times rotation).
   ScanMatchResult Match(const std::shared_ptr<const map::DistanceField>& field, const Eigen::Isometry3d& T_predicted,
                         const matching::Matrix6d& predicted_covariance,
                         const std::vector<Eigen::Vector3f>& points_body, bool line);

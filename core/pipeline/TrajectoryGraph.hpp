@@ -18,7 +18,7 @@ struct LoopClosure {
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();  // [dp, dtheta]
 };
 
-// The sparse pose graph of a mapping run (DESIGN.md 1.5): a node per submap
+// The sparse pose graph of a mapping run (docs/design.md 1.5): a node per submap
 // and per 3D scan ("key scan"), in the local odometry frame the localiser
 // works in. Constraints: each key scan in every submap it was inserted into
 // (from localisation), consecutive key scans (odometry), and loop closures.

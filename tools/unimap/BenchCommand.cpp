@@ -4,11 +4,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,6 +23,7 @@
 #include "Commands.hpp"
 #include "MapEvaluation.hpp"
 #include "MapOutputs.hpp"
+#include "RobustnessMatrix.hpp"
 #include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
@@ -29,6 +33,7 @@
 #include "io/TumTrajectory.hpp"
 #include "pipeline/DatasetRunner.hpp"
 #include "pipeline/Mapper.hpp"
+#include "pipeline/StageTimes.hpp"
 #include "unimap/CoreParameters.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
@@ -40,6 +45,8 @@ struct BenchOptions {
   std::string out = "docs/benchmarks.md";  // report to (re)write
   std::string configs = "configs";         // folder with scenarios/ and platforms/
   bool quick = false;                      // shortened runs, for a smoke test
+  std::string kitti = "../shared/data/kitti00";  // KITTI-style folder for the real-data case (absent: skipped)
+  std::string kiss_icp = "build-peers/runner/build/kiss_icp_runner";  // peer (scripts/peer_kiss_icp.sh); absent: skipped
 };
 
 // One measured figure of a benchmark.
@@ -80,6 +87,24 @@ std::vector<BenchmarkFigure> SimulateScenario(const BenchOptions& options, const
           {"CPU time", Fixed(s.cpu_s, 2) + " s"},
           {"real-time factor (data duration / wall time)", Fixed(s.duration_s / s.wall_s, 1)},
           {"rays per second", Fixed(rays / s.wall_s / 1e6, 2) + " M"}};
+}
+
+// One figure per stage of pipeline::StageTimes: seconds and share of the
+// processing time (the map stages run on the map thread, on the same core).
+std::vector<BenchmarkFigure> StageFigures(const pipeline::StageTimes& t, double processing_s) {
+  const std::pair<const char*, double> stages[] = {
+      {"deskew", t.deskew_s},           {"downsampling", t.downsample_s},
+      {"particle filter + refinement", t.match_s}, {"ESKF", t.eskf_s},
+      {"map insertion (surfaces, occupancy, rays)", t.map_surface_s},
+      {"distance-field update", t.map_distance_s}, {"field export", t.map_export_s},
+      {"loop-closure search", t.loop_search_s}, {"pose-graph optimisation", t.optimisation_s}};
+  std::vector<BenchmarkFigure> figures;
+  for (const auto& [name, seconds] : stages) {
+    figures.push_back({std::string("stage: ") + name,
+                       Fixed(seconds, 2) + " s (" + Fixed(processing_s > 0.0 ? 100.0 * seconds / processing_s : 0.0, 1) +
+                           " %)"});
+  }
+  return figures;
 }
 
 // Simulates a scenario with its default payload (not timed), then localises
@@ -129,7 +154,7 @@ std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const
   const pipeline::LocalizerStats& stats = mapper.localizer_stats();
   const auto& m = evaluation.metrics;
   const auto opt = [](const std::optional<double>& v, int digits) { return v ? Fixed(*v, digits) : "n/a"; };
-  return {{"payload", s.payload + " (" + s.payload_source + ")"},
+  std::vector<BenchmarkFigure> figures = {{"payload", s.payload + " (" + s.payload_source + ")"},
           {"data duration", Fixed(summary.data_duration_s, 1) + " s, " + std::to_string(stats.scans) +
                                 " scans (" + std::to_string(stats.scans_matched) + " matched)"},
           {"3D scans / submaps / loop closures", std::to_string(mapping.key_scans) + " / " +
@@ -150,6 +175,91 @@ std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const
                             " -> " + Fixed(loop_point->optimized.height_error_m, 3)
                       : (mapping.first_loop_closure_time_s < 0.0 ? "none (no loop closure)"
                                                                  : "n/a (no pose within 0.1 s of it)")}};
+  for (BenchmarkFigure& f : StageFigures(mapper.Times(), summary.processing_s)) figures.push_back(std::move(f));
+  return figures;
+}
+
+// Output of a command run through the shell (all lines), and its exit status.
+std::string Capture(const std::string& command, int* status) {
+  std::FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) {
+    *status = -1;
+    return "";
+  }
+  std::string out;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
+  *status = pclose(pipe);
+  return out;
+}
+
+// The number after `"key": ` in a JSON text (the first occurrence), or NaN.
+double JsonNumber(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\"" + key + "\":");
+  if (at == std::string::npos) return std::nan("");
+  return std::strtod(text.c_str() + at + key.size() + 3, nullptr);
+}
+
+std::string ReadText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// KITTI 00 frames 0-15 (real HDL-64 sweeps, no IMU): `unimap convert` then
+// `unimap run` with the HDL-64 platform file (child processes on this
+// process's core); KISS-ICP's C++ core on the same sweeps when its runner is built.
+std::vector<BenchmarkFigure> RunKitti(const BenchOptions& options) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(options.kitti)) return {{"skipped", options.kitti + " not found"}};
+  const fs::path work = fs::temp_directory_path() / ("unimap-bench-kitti-" + std::to_string(getpid()));
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{work};
+  // This executable, even if its file was replaced since it started.
+  const std::string self = "/proc/" + std::to_string(getpid()) + "/exe";
+  int status = 0;
+  Capture("'" + self + "' convert --input '" + options.kitti + "' --format kitti --out '" + (work / "data").string() + "'",
+          &status);
+  if (status != 0) throw Error("unimap convert failed on " + options.kitti);
+  const std::string platform = (fs::path(options.configs) / "platforms" / "kitti_hdl64.yaml").string();
+  Capture("'" + self + "' run --quiet --threads 1 --platform '" + platform + "' --data '" + (work / "data").string() +
+              "' --out '" + (work / "out").string() + "'",
+          &status);
+  if (status != 0) throw Error("unimap run failed on the converted " + options.kitti);
+  const std::string run = ReadText(work / "out" / "run.json");
+  const std::string metrics = ReadText(work / "out" / "metrics.json");
+  const double scans = JsonNumber(run, "scans");
+  const double processing_s = JsonNumber(run, "processing_s");
+  std::vector<BenchmarkFigure> figures = {
+      {"platform", platform},
+      {"sweeps (matched)", Fixed(scans, 0) + " (" + Fixed(JsonNumber(run, "scans_matched"), 0) + ")"},
+      {"unimap: sweeps per second (whole run: deskew, matching, map, loop search)", Fixed(scans / processing_s, 1)},
+      {"unimap: ate_rmse_m / trajectory_scale",
+       Fixed(JsonNumber(metrics, "ate_rmse_m"), 4) + " / " + Fixed(JsonNumber(metrics, "trajectory_scale"), 3)}};
+  if (!fs::exists(options.kiss_icp)) {
+    figures.push_back({"KISS-ICP", "not built (bash scripts/peer_kiss_icp.sh builds it)"});
+    return figures;
+  }
+  const std::string out = Capture("'" + options.kiss_icp + "' '" + options.kitti + "' '" + (work / "kiss.tum").string() + "'",
+                                  &status);
+  const std::size_t line = out.find("kiss-icp:");
+  figures.push_back({"KISS-ICP C++ core (registration only, one thread)",
+                     status == 0 && line != std::string::npos ? out.substr(line, out.find('\n', line) - line)
+                                                               : "failed"});
+  if (status == 0) {
+    Capture("'" + self + "' evaluate --estimate '" + (work / "kiss.tum").string() + "' --truth '" +
+                (work / "data" / "groundtruth.tum").string() + "' --out '" + (work / "kiss").string() + "'",
+            &status);
+    const std::string kiss_metrics = ReadText(work / "kiss" / "metrics.json");
+    figures.push_back({"KISS-ICP: ate_rmse_m / trajectory_scale",
+                       Fixed(JsonNumber(kiss_metrics, "ate_rmse_m"), 4) + " / " +
+                           Fixed(JsonNumber(kiss_metrics, "trajectory_scale"), 3)});
+  }
+  return figures;
 }
 
 std::vector<BenchmarkCase> Cases() {
@@ -178,6 +288,12 @@ std::vector<BenchmarkCase> Cases() {
        "`unimap run` on the simulated 1.1 m-wide hallway loop walked at 0.5 m/s with the rotating Hokuyo. "
        "Targets: real-time factor >= 2, ate_rmse_m <= 0.10.",
        [](const BenchOptions& o) { return LocaliseScenario(o, "narrow_hallway"); }},
+      {"run: KITTI 00 frames 0-15, HDL-64, beside KISS-ICP",
+       "`unimap convert` and `unimap run --platform configs/platforms/kitti_hdl64.yaml` on the real KITTI 00 sweeps "
+       "0-15 (../shared/data/kitti00, 120k points each, no IMU: constant-velocity prior), and KISS-ICP's C++ core "
+       "(defaults, one thread; built by scripts/peer_kiss_icp.sh) on the same sweeps in the same session. Targets "
+       "(issue 20): >= 20 sweeps/s; ATE <= 0.36 m.",
+       [](const BenchOptions& o) { return RunKitti(o); }},
   };
 }
 
@@ -247,7 +363,9 @@ int RunBench(const BenchOptions& options) {
   std::ostringstream md;
   md << "# Benchmarks\n\n"
      << "Generated by `unimap bench" << (options.quick ? " --quick" : "") << "`; do not edit by hand, rerun "
-     << "it to refresh. Every figure is measured on one core (the process is pinned to one CPU).\n\n"
+     << "it to refresh. Every figure is measured on one core (the process is pinned to one CPU). Stage times are "
+     << "wall time spent in each stage; the map thread runs beside the main thread on the same core, so the "
+     << "shares overlap and may add up to more than 100 %.\n\n"
      << "| | |\n|---|---|\n"
      << "| machine | " << CpuModel() << ", " << std::thread::hardware_concurrency() << " cores"
      << (pinned ? ", run pinned to one" : ", NOT pinned (sched_setaffinity failed)") << " |\n"
@@ -284,7 +402,29 @@ void AddBenchCommand(CLI::App* app) {
   cmd->add_option("--configs", options->configs, "Folder holding scenarios/ and platforms/ (default configs)")
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--quick", options->quick, "Short runs (60 s of simulated data) for a smoke test");
-  cmd->callback([options]() {
+  cmd->add_option("--kitti", options->kitti, "KITTI-style folder for the real-data case (default ../shared/data/kitti00)");
+  cmd->add_option("--kiss-icp", options->kiss_icp, "KISS-ICP runner to compare with (scripts/peer_kiss_icp.sh)");
+  auto matrix = std::make_shared<MatrixOptions>();
+  auto run_matrix = std::make_shared<bool>(false);
+  cmd->add_flag("--matrix", *run_matrix,
+                "Run the robustness matrix instead (every scenario x payload, 2x speed, noisy IMU) and rewrite the "
+                "table in docs/robustness.md");
+  cmd->add_option("--jobs", matrix->jobs, "Matrix: cases at once, each pinned to its own core (default 1)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--seed", matrix->seed, "Matrix: simulation seed of every case (default: each scenario's own)");
+  cmd->add_option("--work-dir", matrix->work_dir,
+                  "Matrix: keep datasets and runs here and reuse datasets found there (default: temporary)");
+  cmd->add_option("--max-duration-s", matrix->max_duration_s, "Matrix: only the first seconds of each case")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--only", matrix->only, "Matrix: only cases whose name contains this text");
+  cmd->callback([options, matrix, run_matrix, cmd]() {
+    if (*run_matrix) {
+      matrix->configs = options->configs;
+      if (cmd->count("--out") > 0) matrix->out = options->out;
+      const int code = RunRobustnessMatrix(*matrix);
+      if (code != 0) throw CLI::RuntimeError(code);
+      return;
+    }
     const int code = RunBench(*options);
     if (code != 0) throw CLI::RuntimeError(code);
   });

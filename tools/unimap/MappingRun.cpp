@@ -3,12 +3,14 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 #include "DatasetChecks.hpp"
 #include "MapOutputs.hpp"
 #include "MotionChoice.hpp"
 #include "OutputFolder.hpp"
 #include "RunOutputs.hpp"
+#include "eval/LoopClosureCheck.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "estimation/MotionPriorOptions.hpp"
@@ -34,7 +36,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     mapper_options.loop_search.enabled = !options.no_loop_closure;
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
-    if (options.measure_all_line_points) mapper_options.localizer.line_max_predicted_distance_m = 0.0;
+    if (options.measure_all_line_points) mapper_options.localizer.max_predicted_distance_m = 0.0;
     io::DatasetReader reader(options.data_dir);
     const MotionChoice motion = ChooseMotion(options.motion, reader);
     mapper_options.localizer.motion.source = motion.source;
@@ -72,6 +74,24 @@ int RunMappingToFolder(const MappingRunOptions& options) {
           ComputeLoopPointErrors(io::ReadTumTrajectory(out / kOdometryFile), mapper.OptimizedTrajectory(),
                                  io::ReadTumTrajectory(truth), stats.first_loop_closure_time_s);
       if (loop_point) outputs.extras.emplace_back("loop_point", LoopPointJson(*loop_point));
+      std::vector<eval::ClaimedMotion> claims;
+      for (const pipeline::LoopClosureLink& link : mapper.LoopClosureLinks()) {
+        claims.push_back({link.submap_start_time_s, link.time_s, link.T_start_body});
+      }
+      const eval::LoopClosureCheck check = eval::CheckLoopClosures(claims, io::ReadTumTrajectory(truth));
+      JsonObject o;
+      o.Add("checked", check.checked);
+      o.Add("false_closures", check.false_closures);
+      o.Add("max_translation_error_m", check.max_translation_error_m);
+      o.Add("max_rotation_error_deg", check.max_rotation_error_deg);
+      o.Add("false_translation_m", check.false_translation_m);
+      o.Add("false_rotation_deg", check.false_rotation_deg);
+      outputs.extras.emplace_back("loop_closure_check", o);
+      if (check.false_closures > 0) {
+        std::cout << "  note: " << check.false_closures << " of " << check.checked
+                  << " loop closures are false by the ground truth (off by more than "
+                  << check.false_translation_m << " m or " << check.false_rotation_deg << " deg)\n";
+      }
     }
     std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, "
               << stats.loop_closures << " loop closures, " << stats.optimisations << " optimisations\n";

@@ -15,7 +15,7 @@ struct MappingRunOptions {
   bool no_loop_closure = false;  // map without loop-closure search
   bool no_line_gap_fill = false;  // line scans: the distance map holds the measured stripes only
   bool measure_all_line_points = false;  // line scans: also measure points far from the map at the
-                                         // prediction (LocalizerOptions::line_max_predicted_distance_m 0)
+                                         // prediction (LocalizerOptions::max_predicted_distance_m 0)
   bool plane_matching = false;   // odometry matches points against neighbourhood planes only
                                  // (LocalizerOptions::UsePlaneMatching)
   bool trace = false;            // write trace.csv (ScanDiagnostics of every pose)

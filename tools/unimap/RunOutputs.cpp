@@ -61,7 +61,7 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
   double sum_p2 = 0.0, sum_r2 = 0.0;
   for (const eval::AssociatedPose& pair : association.pairs) {
     const double dp = (pair.T_est_body.translation() - pair.T_true_body.translation()).norm();
-    // Rotation error log(q_est^-1 q_true) (DESIGN.md 1), its angle.
+    // Rotation error log(q_est^-1 q_true) (docs/design.md 1), its angle.
     const Eigen::Quaterniond q_est(pair.T_est_body.linear());
     const Eigen::Quaterniond q_true(pair.T_true_body.linear());
     const double theta_deg = estimation::LogQ(q_est.conjugate() * q_true).norm() * kRadToDeg;

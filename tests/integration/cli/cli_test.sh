@@ -49,6 +49,21 @@ case $case_name in
     f=$(printf 'plugin: no_such_payload\n' | platform)
     code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"
     expect "$f:1: key 'plugin': .*not found" ;;
+  bench_matrix)
+    # The robustness matrix's machinery on one short case: a child process
+    # simulates and maps it, the table replaces only the generated part.
+    printf '# Kept\n\nhand-written text\n\n<!-- matrix:begin -->\nold table\n<!-- matrix:end -->\n\nafter\n' >"$work/robustness.md"
+    code=$(run bench --matrix --configs "$src/configs" --only narrow_hallway_rotating_vlp16_nom --max-duration-s 12 \
+      --work-dir "$work/matrix" --out "$work/robustness.md")
+    # 12 s of a loop scenario close no loop: the case may miss its targets (exit 1), never fail to run.
+    [ "$code" = 0 ] || [ "$code" = 1 ] || fail "exit $code"
+    expect "matrix: narrow_hallway_rotating_vlp16_nom done"
+    grep -q "hand-written text" "$work/robustness.md" || fail "text before the table was lost"
+    grep -q "^after$" "$work/robustness.md" || fail "text after the table was lost"
+    grep -q "old table" "$work/robustness.md" && fail "the old table was kept"
+    grep -Eq '^\| narrow_hallway \| rotating_vlp16 \| nominal \| 0\.[0-9]{3} \| ' "$work/robustness.md" ||
+      fail "no measured row for the case"
+    grep -q "1 cases met\|0 of 1 cases met\|1 of 1 cases met" "$work/robustness.md" || fail "no summary line" ;;
   evaluate_map)
     # A plane world z = 0; the estimate is the truth raised by 1 m, and so is
     # the map (map points live in the estimate's frame): unaligned errors are

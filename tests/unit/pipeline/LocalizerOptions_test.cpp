@@ -119,15 +119,15 @@ TEST(LocalizerOptionsTest, LineGapFillIsOnByDefaultAndChecked) {
 
 TEST(LocalizerOptionsTest, LinePointsAreGatedAtOneAndAHalfVoxelsExceptInAPriorMap) {
   LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
-  EXPECT_NEAR(o.line_max_predicted_distance_m, 0.15, 1e-12);
-  EXPECT_NEAR(LocalizerOptions::FromPlatform(WithResolution(0.3)).line_max_predicted_distance_m, 0.45, 1e-12);
+  EXPECT_NEAR(o.max_predicted_distance_m, 0.15, 1e-12);
+  EXPECT_NEAR(LocalizerOptions::FromPlatform(WithResolution(0.3)).max_predicted_distance_m, 0.45, 1e-12);
   // A complete prior map: every point is measured.
-  EXPECT_EQ(LocalizerOptions::ForPriorMap(WithResolution(0.1)).line_max_predicted_distance_m, 0.0);
+  EXPECT_EQ(LocalizerOptions::ForPriorMap(WithResolution(0.1)).max_predicted_distance_m, 0.0);
   std::string why;
   EXPECT_TRUE(o.IsValid(&why)) << why;
-  o.line_max_predicted_distance_m = -0.1;
+  o.max_predicted_distance_m = -0.1;
   EXPECT_FALSE(o.IsValid(&why));
-  EXPECT_NE(why.find("line_max_predicted_distance_m"), std::string::npos);
+  EXPECT_NE(why.find("max_predicted_distance_m"), std::string::npos);
 }
 
 }  // namespace

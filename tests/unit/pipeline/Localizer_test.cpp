@@ -164,7 +164,7 @@ TEST(LocalizerTest, MatchingAgainstHalfAHorizonPullsAStandingSensor) {
   // towards the half of the horizon the map holds, and the estimate moves
   // while the sensor stands still.
   const StartMotion m = TrackHallwayStart("all_points", [](LocalizerOptions* o) {
-    o->line_max_predicted_distance_m = 0.0;
+    o->max_predicted_distance_m = 0.0;
   });
   EXPECT_GT(m.max_translation_m, 0.3);
   EXPECT_GT(m.max_rotation_deg, 3.0);
