@@ -1,5 +1,6 @@
 #include "pipeline/Mapper.hpp"
 
+#include "map/SurfacePoints.hpp"
 #include "matching/VoxelDownsampler.hpp"
 #include "unimap/Errors.hpp"
 
@@ -91,7 +92,22 @@ void Mapper::OnKeyScan(KeyScan&& key) {
     }
     for (const std::string& m : finder_.TakeMessages()) Note(m);
   }
-  key_points_body_.push_back(std::move(points_body));
+  // The final map keeps from each key scan only the voxels (local frame, map
+  // resolution) no earlier key scan holds: a slow or hovering sensor sees the
+  // same voxels again and again, and keeping them all made memory grow with
+  // time instead of with the area mapped (docs/reliability.md, memory over
+  // long runs). A place revisited after drift lies in other local voxels and
+  // is kept again.
+  const double voxel_m = options_.submaps.map.resolution_m;
+  std::vector<Eigen::Vector3f> kept;
+  for (std::size_t i = 0; i < key.points_local.size(); ++i) {
+    const Eigen::Vector3f& p = key.points_local[i];
+    const Eigen::Vector3i cell((p / static_cast<float>(voxel_m)).array().floor().cast<int>());
+    if (held_voxels_.insert(map::SurfacePoints::Pack(cell)).second) kept.push_back(points_body[i]);
+  }
+  stats_.key_scan_points += points_body.size();
+  stats_.map_points_kept += kept.size();
+  key_points_body_.push_back(std::move(kept));
 
   // Every I 3D scans (once a loop closure exists: without one the graph,
   // built from a single trajectory, is already at its optimum).

@@ -1,7 +1,9 @@
 #pragma once
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -30,6 +32,8 @@ struct MapperStats {
   double loop_search_s = 0.0;         // total time searching and matching loop closures
   double first_loop_closure_time_s = -1.0;  // time of the 3D scan of the first accepted closure (-1: none)
   LoopSearchStats loop_search;        // candidate counts
+  std::size_t key_scan_points = 0;    // points of all key scans (one per map voxel each)
+  std::size_t map_points_kept = 0;    // of those, kept for MapPoints: each local-frame voxel once
   std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
 };
 
@@ -95,7 +99,8 @@ class Mapper : public EventSink {
   LoopClosureFinder finder_;
   graph::BackgroundOptimizer optimizer_;
   std::vector<ScanPose> local_poses_;                       // every pose so far (local frame)
-  std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan
+  std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
+  std::unordered_set<std::uint64_t> held_voxels_;           // voxels (local frame) key_points_body_ holds
   double path_m_ = 0.0;                                     // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;

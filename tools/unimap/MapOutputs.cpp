@@ -83,6 +83,8 @@ JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline:
   o.Add("optimisations", s.optimisations);
   o.Add("optimisation_failures", s.optimisation_failures);
   o.Add("optimisation_s", s.optimisation_s);
+  o.Add("key_scan_points", s.key_scan_points);
+  o.Add("map_points_kept", s.map_points_kept);
   o.Add("loop_searches", s.loop_search.searches);
   o.Add("loop_candidates", s.loop_search.candidates);
   o.Add("loop_rejected", s.loop_search.rejected);

@@ -77,6 +77,16 @@ TEST(MapperTest, WithoutLoopClosuresTheOptimisedTrajectoryIsTheOdometry) {
   }
 }
 
+TEST(MapperTest, AStaticSensorKeepsEachVoxelOnce) {
+  // Standing still, later key scans see voxels earlier ones hold: the final
+  // map keeps fewer points than the key scans had, and still at least one per
+  // voxel of the map it outputs.
+  const MapperStats& s = Mapped().stats;
+  ASSERT_GT(s.key_scan_points, 0u);
+  EXPECT_LT(s.map_points_kept, s.key_scan_points);
+  EXPECT_GE(s.map_points_kept, Mapped().map.size());
+}
+
 TEST(MapperTest, MapPointsLieOnTheTrueSurfaces) {
   const MappedTunnel& m = Mapped();
   ASSERT_GT(m.map.size(), 1000u);
