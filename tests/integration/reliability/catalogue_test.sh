@@ -53,6 +53,18 @@ text() { [ "$LIST" = 1 ] || printf "$2" >"$work/$1"; echo "$work/$1"; }  # text 
 data() { [ "$LIST" = 1 ] && { echo "$work/$1"; return; }; variant "$1"; }
 run_on() { echo run --platform "$hokuyo" --quiet --data "$1" --out "$work/out_$(basename "$1")"; }
 
+# A CARMEN log long enough to interrupt or to fill a small 'disk': 40,000
+# FLASER lines of 180 beams (one hour at 10 Hz, 36 MB), written once.
+big_clf() {
+  [ -f "$work/big.clf" ] || awk 'BEGIN {
+    for (i = 0; i < 40000; i++) {
+      t = 10 + 0.1 * i; line = "FLASER 180"
+      for (b = 0; b < 180; b++) line = line sprintf(" %.2f", 2 + 0.1 * (b % 30))
+      printf "%s 1.0 2.0 0.0 1.0 2.0 0.0 %.3f host %.3f\n", line, t, t
+    } }' > "$work/big.clf"
+  echo "$work/big.clf"
+}
+
 case $class in
 config)
   p=$(text alias_map.yaml 'plugin: rotating_2d\nparameters: &a\n  g: *a\n')
@@ -330,7 +342,7 @@ signals)
   [ "$LIST" = 1 ] || [ -f "$dm/data/metadata.yaml" ] || fail "demo_sigint: no metadata.yaml"
   cv="$work/conv_term"
   case_ convert_sigterm "convert, SIGTERM while converting: a complete dataset of what was read" 143 "interrupted \(signal 15\)" bash -c "
-    '$exe' convert --format carmen --input '$src/../shared/data/radish/intel.clf.bz2' --out '$cv' & pid=\$!
+    '$exe' convert --format carmen --input '$(big_clf)' --out '$cv' & pid=\$!
     for i in \$(seq 1 20000); do [ -f '$cv/scans.bin.partial' ] && break; sleep 0.001; done
     sleep 0.05; kill -TERM \$pid; wait \$pid"
   [ "$LIST" = 1 ] || [ -f "$cv/metadata.yaml" ] || fail "convert_sigterm: no metadata.yaml"
@@ -341,7 +353,7 @@ disk)
     ulimit -f 2048; trap '' XFSZ; exec '$exe' simulate --scenario '$src/configs/scenarios/tunnel.yaml' --duration-s 20 --out '$work/sim_full' --quiet"
   [ "$LIST" = 1 ] || [ ! -f "$work/sim_full/metadata.yaml" ] || fail "simulate_disk_full: a metadata.yaml was written"
   case_ convert_disk_full "convert into a 'disk' of 1 MB" 2 "write failed: File too large|cannot complete the file" bash -c "
-    ulimit -f 1024; trap '' XFSZ; exec '$exe' convert --format carmen --input '$src/../shared/data/radish/intel.clf.bz2' --out '$work/conv_full'"
+    ulimit -f 1024; trap '' XFSZ; exec '$exe' convert --format carmen --input '$(big_clf)' --out '$work/conv_full'"
   ;;
 *) fail "unknown class $class" ;;
 esac
