@@ -146,8 +146,7 @@ std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
 std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
   // The first point of each voxel_m cell in key-scan order (what
   // matching::VoxelDownsample of every key scan's points gives) without
-  // gathering all of them first: that vector was the peak of a long run's
-  // memory (docs/reliability.md, memory over long runs).
+  // gathering all of them first.
   std::vector<Eigen::Vector3f> points;
   std::unordered_set<std::uint64_t> seen;
   const double inv_voxel = voxel_m > 0.0 ? 1.0 / voxel_m : 0.0;
