@@ -7,14 +7,10 @@
 #include <unordered_set>
 
 namespace unimap::matching {
-namespace {
-
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
   const auto cell = [&](float v) { return static_cast<int>(std::floor(v * inv_voxel)); };
   return VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())));
 }
-
-}  // namespace
 
 std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
                                              int max_points, std::uint64_t seed) {

@@ -150,15 +150,11 @@ std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
   std::vector<Eigen::Vector3f> points;
   std::unordered_set<std::uint64_t> seen;
   const double inv_voxel = voxel_m > 0.0 ? 1.0 / voxel_m : 0.0;
-  const auto cell = [inv_voxel](float v) { return static_cast<int>(std::floor(v * inv_voxel)); };
   for (std::size_t k = 0; k < key_points_body_.size(); ++k) {
     const Eigen::Isometry3f T_world_body = graph_.T_world_key(static_cast<int>(k)).cast<float>();
     for (const Eigen::Vector3f& p_body : key_points_body_[k]) {
       const Eigen::Vector3f p = T_world_body * p_body;
-      if (voxel_m > 0.0 &&
-          !seen.insert(matching::VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())))).second) {
-        continue;
-      }
+      if (voxel_m > 0.0 && !seen.insert(matching::VoxelKey(p, inv_voxel)).second) continue;
       points.push_back(p);
     }
   }

@@ -31,11 +31,10 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   // vertical field of view has mapped); measured against the nearest mapped
   // surface they pull the pose towards it. A sweep's gate allows for the
   // prediction's own uncertainty; a line's is fixed (it is never searched).
-  const double gate_m = options_.max_predicted_distance_m > 0.0 && !line
-                            ? options_.max_predicted_distance_m + options_.sweep_gate_sigmas * position_sigma
-                            : options_.max_predicted_distance_m;
-  const double gate_per_range =
-      options_.max_predicted_distance_m > 0.0 && !line ? options_.sweep_gate_sigmas * rotation_sigma : 0.0;
+  const bool widen = options_.max_predicted_distance_m > 0.0 && !line;
+  const double gate_m =
+      options_.max_predicted_distance_m + (widen ? options_.sweep_gate_sigmas * position_sigma : 0.0);
+  const double gate_per_range = widen ? options_.sweep_gate_sigmas * rotation_sigma : 0.0;
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
                     rotation_sigma > options_.reacquire.wide_sigma_rad;
   ScanMatchResult out;
