@@ -16,6 +16,7 @@ constexpr int kKeyOffset = 32768;  // voxel key of coordinate 0
 constexpr int kMaxKey = 65535;
 constexpr int kEdge = DistanceField::kBlockEdge;
 constexpr int kMask = kEdge - 1;
+constexpr int kShiftBlock = DistanceField::kBlockShift;
 constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();  // no occupied voxel within reach
 
 const std::array<Eigen::Vector3i, 6> kSteps = {Eigen::Vector3i(1, 0, 0),  Eigen::Vector3i(-1, 0, 0),
@@ -52,14 +53,48 @@ bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element&
   return change_voxels > SurfaceDistanceLayer::kMoveTolerance;
 }
 
+// True when the ray from sensor_map to the return in end_voxel_centre_map
+// passes through the surface of element: always for elements without a
+// plane; for planar ones, when the ray crosses the plane with its end
+// clearly behind it (by more than the voxel centre may misplace the return
+// along the normal: half a voxel per axis, |n|_1 res / 2) within the
+// element's disk. A ray grazing a floor or wall runs through the voxels of
+// that surface before its return without crossing it (docs/design.md 1.4):
+// those are not misses.
+bool CrossesElement(const SurfacePoints::Element& element, const Eigen::Vector3f& sensor_map,
+                    const Eigen::Vector3f& end_voxel_centre_map, float resolution_m) {
+  if (!element.planar) return true;
+  const float h_start = element.normal.dot(sensor_map - element.mean_m);
+  const float h_end = element.normal.dot(end_voxel_centre_map - element.mean_m);
+  const float margin = 0.5f * resolution_m * element.normal.cwiseAbs().sum();
+  if (!((h_start > 0.0f && h_end < -margin) || (h_start < 0.0f && h_end > margin))) return false;
+  const Eigen::Vector3f crossing =
+      sensor_map + (h_start / (h_start - h_end)) * (end_voxel_centre_map - sensor_map);
+  const float radius = SurfacePoints::kPatchRadius * resolution_m;
+  return (crossing - element.mean_m).squaredNorm() <= radius * radius;
+}
+
 }  // namespace
+
+bool SurfaceDistanceLayer::RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
+                                             const Eigen::Vector3f& end_voxel_centre_map) const {
+  return site.element == nullptr ||
+         CrossesElement(*site.element, sensor_map, end_voxel_centre_map, static_cast<float>(options_.resolution_m));
+}
 
 struct SurfaceDistanceLayer::WorkBlock {
   Eigen::Vector3i key = Eigen::Vector3i::Zero();                       // block coordinates
   std::array<std::uint16_t, DistanceField::kBlockCells> sq_distance;  // to the nearest occupied voxel centre (voxels^2)
   std::array<Site*, DistanceField::kBlockCells> owner;                // that voxel
   bool dirty = true;                                                   // to recompute at the next export
+  std::array<std::uint64_t, DistanceField::kBlockCells / 64> dirty_cells{};  // ... these cells of it
   std::shared_ptr<const DistanceField::Block> exported;               // as of the last export (null: all clamp)
+
+  // Marks a cell for recomputation at the next export.
+  void Touch(std::size_t offset) {
+    dirty = true;
+    dirty_cells[offset >> 6] |= std::uint64_t{1} << (offset & 63u);
+  }
 };
 
 SurfaceDistanceLayer::SurfaceDistanceLayer(const DistanceMapOptions& options)
@@ -178,79 +213,42 @@ void SurfaceDistanceLayer::SetOccupied(Site* site, bool occupied) {
 
 void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
                                  std::vector<Site*>* freed) {
-  // Rays in key units (voxel edges at integers): Amanatides & Woo's traversal
-  // from the sensor to the centre of each return's voxel, that voxel excluded.
+  // Rays in key units from the sensor to the centre of each return's voxel,
+  // that voxel excluded (RayWalk).
   const Eigen::Vector3d origin = sensor_map.cast<double>() / options_.resolution_m + Eigen::Vector3d::Constant(kKeyOffset);
-  const Eigen::Vector3i start = origin.array().floor().cast<int>();
+  // Rays fan out from one sensor: most cross the blocks other rays just
+  // crossed. A direct-mapped cache saves their hash look-ups; masks change
+  // between scans (hits), so it starts empty.
+  mask_cache_.assign(kMaskCacheSize, MaskCacheEntry{});
+  const auto lookup = [this](const Eigen::Vector3i& block) {
+    const std::uint64_t packed_block = SurfacePoints::Pack(block);
+    MaskCacheEntry& entry = mask_cache_[KeyHash()(packed_block) & (kMaskCacheSize - 1)];
+    if (entry.packed_block != packed_block) {
+      const auto it = occupied_masks_.find(packed_block);
+      entry.packed_block = packed_block;
+      entry.occupancy.mask = it == occupied_masks_.end() ? nullptr : &it->second;
+      entry.occupancy.quarters = entry.occupancy.mask == nullptr ? 0 : QuarterMask(*entry.occupancy.mask);
+    }
+    return entry.occupancy;
+  };
   for (const std::uint64_t packed : endpoints) {
     const Eigen::Vector3i end = Unpack(packed);
-    const Eigen::Vector3d direction = end.cast<double>() + Eigen::Vector3d::Constant(0.5) - origin;
-    Eigen::Vector3i current = start;
-    Eigen::Vector3i step;
-    Eigen::Vector3d t_max, t_delta;
-    for (int a = 0; a < 3; ++a) {
-      step[a] = direction[a] > 0.0 ? 1 : -1;
-      if (direction[a] == 0.0) {
-        t_max[a] = t_delta[a] = std::numeric_limits<double>::infinity();
-      } else {
-        t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin[a]) / direction[a];
-        t_delta[a] = static_cast<double>(step[a]) / direction[a];
-      }
-    }
-    Eigen::Vector3i cached_block = Eigen::Vector3i::Constant(-1);
-    const std::array<std::uint64_t, DistanceField::kBlockCells / 64>* mask = nullptr;
-    double t = 0.0;  // ray parameter of the current voxel's entry
-    while (current != end) {
-      if (InKeyRange(current)) {
-        const Eigen::Vector3i block = BlockOf(current);
-        if (block != cached_block) {
-          cached_block = block;
-          const auto it = occupied_masks_.find(SurfacePoints::Pack(block));
-          mask = it == occupied_masks_.end() ? nullptr : &it->second;
-        }
-        if (mask == nullptr && (BlockOf(end) != block)) {
-          // Nothing occupied in this block: jump to where the ray leaves it.
-          double t_exit = std::numeric_limits<double>::infinity();
-          for (int a = 0; a < 3; ++a) {
-            if (direction[a] == 0.0) continue;
-            const double face = static_cast<double>(block[a] * kEdge + (step[a] > 0 ? kEdge : 0));
-            t_exit = std::min(t_exit, (face - origin[a]) / direction[a]);
-          }
-          if (t_exit >= 1.0) break;
-          t = std::max(t, t_exit);
-          const Eigen::Vector3d inside = origin + (t + 1e-9) * direction;
-          current = inside.array().floor().cast<int>();
-          for (int a = 0; a < 3; ++a) {
-            if (direction[a] != 0.0) {
-              t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin[a]) / direction[a];
-            }
-          }
-          continue;
-        }
-        const std::size_t bit = CellOffset(current);
-        if (mask != nullptr && ((*mask)[bit / 64] >> (bit % 64) & 1u) != 0) {
-          Site& site = *sites_.at(SurfacePoints::Pack(current));
-          if (site.missed_in != scans_) {
-            site.missed_in = scans_;
-            ++counts_.misses;
-            site.log_odds = std::max(site.log_odds + log_odds_miss_, log_odds_min_);
-            if (site.log_odds <= 0.0f) {
-              SetOccupied(&site, false);  // may invalidate mask: look the block up again
-              cached_block = Eigen::Vector3i::Constant(-1);
-              ++counts_.voxels_cleared;
-              freed->push_back(&site);
-            }
-          }
-        }
-      }
-      int axis = 0;
-      if (t_max[1] < t_max[axis]) axis = 1;
-      if (t_max[2] < t_max[axis]) axis = 2;
-      if (t_max[axis] > 1.0) break;  // past the return (rounding at its voxel's boundary)
-      t = t_max[axis];
-      current[axis] += step[axis];
-      t_max[axis] += t_delta[axis];
-    }
+    const Eigen::Vector3f end_centre = Centre(end);
+    WalkRay(origin, end, lookup, [&](const Eigen::Vector3i& voxel) {
+      Site& site = *sites_.at(SurfacePoints::Pack(voxel));
+      if (site.missed_in == scans_ || !RayCrossesSurface(site, sensor_map, end_centre)) return false;
+      site.missed_in = scans_;
+      ++counts_.misses;
+      site.log_odds = std::max(site.log_odds + log_odds_miss_, log_odds_min_);
+      if (site.log_odds > 0.0f) return false;
+      // May erase the block's mask (moving others in the table): every
+      // block is looked up again.
+      SetOccupied(&site, false);
+      std::fill(mask_cache_.begin(), mask_cache_.end(), MaskCacheEntry{});
+      ++counts_.voxels_cleared;
+      freed->push_back(&site);
+      return true;
+    });
   }
   // A deterministic order for the refills.
   std::sort(freed->begin(), freed->end(), [](const Site* a, const Site* b) {
@@ -277,13 +275,14 @@ void SurfaceDistanceLayer::Wave(Site* site) {
   ++counts_.waves;
   site->waved = true;
   site->marked = *site->element;
-  std::vector<std::pair<Eigen::Vector3i, Site*>> queue;
+  std::vector<std::pair<Eigen::Vector3i, Site*>>& queue = wave_queue_;
+  queue.clear();
   // Its own voxel first (distance 0 wins over any other owner).
   WorkBlock* block = BlockAt(site->key, true);
   const std::size_t offset = CellOffset(site->key);
   block->sq_distance[offset] = 0;
   block->owner[offset] = site;
-  block->dirty = true;
+  block->Touch(offset);
   ++counts_.cells_claimed;
   if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) {
     site->blocks.push_back(block);
@@ -304,7 +303,7 @@ void SurfaceDistanceLayer::Refill(Site* site) {
       if (block->owner[static_cast<std::size_t>(i)] != site) continue;
       block->owner[static_cast<std::size_t>(i)] = nullptr;
       block->sq_distance[static_cast<std::size_t>(i)] = kFar;
-      block->dirty = true;
+      block->Touch(static_cast<std::size_t>(i));
       released.push_back(first + Eigen::Vector3i(i >> (2 * DistanceField::kBlockShift),
                                                   (i >> DistanceField::kBlockShift) & kMask, i & kMask));
     }
@@ -326,18 +325,67 @@ void SurfaceDistanceLayer::Refill(Site* site) {
 
 void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>* queue) {
   const int reach_sq = reach_ * reach_;
-  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried
+  // A wave stays within reach_ <= kEdge cells of its voxel, so within the
+  // 3x3x3 blocks around the voxel's block: those are looked up once per
+  // site (neighbourhood[], filled on first use) instead of once per cell.
+  const bool local = reach_ <= kEdge;
+  std::array<WorkBlock*, 27> neighbourhood{};
+  std::uint32_t recorded = 0;  // neighbourhood blocks already in site->blocks
+  const Site* neighbourhood_site = nullptr;
+  Eigen::Vector3i site_block = Eigen::Vector3i::Zero();
+  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried (not local)
   WorkBlock* cached = nullptr;
   for (std::size_t head = 0; head < queue->size(); ++head) {
     const auto [cell, site] = (*queue)[head];
+    if (local && site != neighbourhood_site) {
+      neighbourhood_site = site;
+      site_block = BlockOf(site->key);
+      neighbourhood.fill(nullptr);
+      recorded = 0;
+    }
     Eigen::Vector3i recorded_key = Eigen::Vector3i::Constant(-1);  // the last block added to site->blocks
+    // Inside the key range with a margin of a block: neighbourhood
+    // coordinates need no range checks.
+    if (local && (site_block.array() >= 1).all() && (site_block.array() < (kMaxKey >> kShiftBlock) - 1).all()) {
+      const Eigen::Vector3i base = (site_block.array() - 1) * kEdge;  // lowest voxel of the neighbourhood
+      for (const Eigen::Vector3i& step : kSteps) {
+        const Eigen::Vector3i next = cell + step;
+        const int sq = (next - site->key).squaredNorm();
+        if (sq > reach_sq) continue;
+        const Eigen::Vector3i l = next - base;  // in [0, 3 kEdge)
+        const int slot = ((l.x() >> kShiftBlock) * 3 + (l.y() >> kShiftBlock)) * 3 + (l.z() >> kShiftBlock);
+        WorkBlock*& block = neighbourhood[static_cast<std::size_t>(slot)];
+        if (block == nullptr) block = BlockAt(next, true);
+        const auto offset =
+            static_cast<std::size_t>(DistanceField::BlockOffset(l.x() & kMask, l.y() & kMask, l.z() & kMask));
+        if (!(sq < block->sq_distance[offset])) continue;
+        block->sq_distance[offset] = static_cast<std::uint16_t>(sq);
+        block->owner[offset] = site;
+        block->Touch(offset);
+        ++counts_.cells_claimed;
+        if ((recorded >> slot & 1u) == 0) {
+          recorded |= 1u << slot;
+          if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) {
+            site->blocks.push_back(block);
+          }
+        }
+        queue->emplace_back(next, site);
+      }
+      continue;
+    }
     for (const Eigen::Vector3i& step : kSteps) {
       const Eigen::Vector3i next = cell + step;
       if (!InKeyRange(next)) continue;
       const int sq = (next - site->key).squaredNorm();
       if (sq > reach_sq) continue;
       const Eigen::Vector3i block_key = BlockOf(next);
-      if (block_key != cached_key) {
+      int slot = -1;
+      if (local) {
+        const Eigen::Vector3i r = block_key - site_block + Eigen::Vector3i::Ones();
+        slot = (r.x() * 3 + r.y()) * 3 + r.z();
+        cached = neighbourhood[static_cast<std::size_t>(slot)];
+        if (cached == nullptr) cached = neighbourhood[static_cast<std::size_t>(slot)] = BlockAt(next, true);
+      } else if (block_key != cached_key) {
         cached = BlockAt(next, true);
         cached_key = block_key;
       }
@@ -345,9 +393,16 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
       if (!(sq < cached->sq_distance[offset])) continue;
       cached->sq_distance[offset] = static_cast<std::uint16_t>(sq);
       cached->owner[offset] = site;
-      cached->dirty = true;
+      cached->Touch(offset);
       ++counts_.cells_claimed;
-      if (block_key != recorded_key) {
+      if (local) {
+        if ((recorded >> slot & 1u) == 0) {
+          recorded |= 1u << slot;
+          if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
+            site->blocks.push_back(cached);
+          }
+        }
+      } else if (block_key != recorded_key) {
         recorded_key = block_key;
         if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
           site->blocks.push_back(cached);
@@ -362,27 +417,45 @@ void SurfaceDistanceLayer::MarkIfChanged(Site* site, bool always) {
   if (site->element == nullptr) return;
   if (!always && !Differs(site->marked, *site->element, static_cast<float>(options_.resolution_m))) return;
   site->marked = *site->element;
-  for (WorkBlock* block : site->blocks) block->dirty = true;
+  // Every cell of its blocks (finding just its own cells costs about as
+  // much as recomputing them).
+  for (WorkBlock* block : site->blocks) {
+    block->dirty = true;
+    block->dirty_cells.fill(~std::uint64_t{0});
+  }
 }
 
 void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& block_key) {
   ++counts_.blocks_computed;
-  auto codes = std::make_shared<DistanceField::Block>(static_cast<std::size_t>(DistanceField::kBlockCells),
-                                                      DistanceField::kMaxSteps);
-  bool any = false;
-  const Eigen::Vector3i first = block_key * kEdge;
-  for (int x = 0; x < kEdge; ++x) {
-    for (int y = 0; y < kEdge; ++y) {
-      for (int z = 0; z < kEdge; ++z) {
-        const auto offset = static_cast<std::size_t>(DistanceField::BlockOffset(x, y, z));
-        const Site* owner = block->owner[offset];
-        if (owner == nullptr) continue;
-        const float d = surfaces_.SignedDistance(*owner->element, Centre(first + Eigen::Vector3i(x, y, z)));
-        (*codes)[offset] = DistanceField::Quantise(d, clamp_m_);
-        any = any || (*codes)[offset] != DistanceField::kMaxSteps;
+  // Only the cells marked since the last export change: start from its codes.
+  auto codes = block->exported ? std::make_shared<DistanceField::Block>(*block->exported)
+                               : std::make_shared<DistanceField::Block>(
+                                     static_cast<std::size_t>(DistanceField::kBlockCells), DistanceField::kMaxSteps);
+  // Cell centres per axis, as Centre() computes them.
+  std::array<Eigen::Vector3f, kEdge> axis_centres;
+  for (int i = 0; i < kEdge; ++i) {
+    axis_centres[static_cast<std::size_t>(i)] = Centre(block_key * kEdge + Eigen::Vector3i::Constant(i));
+  }
+  for (std::size_t word = 0; word < block->dirty_cells.size(); ++word) {
+    for (std::uint64_t bits = block->dirty_cells[word]; bits != 0; bits &= bits - 1) {
+      const std::size_t offset = word * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
+      const Site* owner = block->owner[offset];
+      if (owner == nullptr) {
+        (*codes)[offset] = DistanceField::kMaxSteps;
+        continue;
       }
+      const int x = static_cast<int>(offset >> (2 * DistanceField::kBlockShift));
+      const int y = static_cast<int>((offset >> DistanceField::kBlockShift) & kMask);
+      const int z = static_cast<int>(offset & kMask);
+      const Eigen::Vector3f centre(axis_centres[static_cast<std::size_t>(x)].x(),
+                                   axis_centres[static_cast<std::size_t>(y)].y(),
+                                   axis_centres[static_cast<std::size_t>(z)].z());
+      (*codes)[offset] = DistanceField::Quantise(surfaces_.SignedDistance(*owner->element, centre), clamp_m_);
     }
   }
+  block->dirty_cells.fill(0);
+  const bool any = std::any_of(codes->begin(), codes->end(),
+                               [](std::uint16_t code) { return code != DistanceField::kMaxSteps; });
   block->exported = any ? std::move(codes) : nullptr;
   block->dirty = false;
 }

@@ -12,6 +12,7 @@
 
 #include "map/DistanceField.hpp"
 #include "map/DistanceMapOptions.hpp"
+#include "map/RayWalk.hpp"
 #include "map/SurfacePoints.hpp"
 
 namespace unimap::map {
@@ -52,10 +53,11 @@ struct SurfaceDistanceCounts {
 // each newly occupied voxel that stop where cells are nearer to another;
 // when a voxel becomes free, its cells are refilled from the voxels around
 // them) and, for export, the distance from the cell's centre to that
-// voxel's element. A block is recomputed when one of its cells gets a new
-// nearest voxel or the element of such a voxel changes by more than
-// kMoveTolerance. Distances are unsigned (as odometry reads them).
-// Export() shares the blocks unchanged since the previous export.
+// voxel's element. A cell's distance is recomputed when it gets a new
+// nearest voxel or that voxel's element changes by more than
+// kMoveTolerance (its block is copied with those cells recomputed).
+// Distances are unsigned (as odometry reads them). Export() shares the
+// blocks unchanged since the previous export.
 //
 // Voxels are named by 16-bit keys per axis (floor(p / resolution) + 32768,
 // as OctoMap's): the map spans +-32768 voxels around the origin; returns
@@ -63,8 +65,8 @@ struct SurfaceDistanceCounts {
 // serialises it).
 class SurfaceDistanceLayer {
  public:
-  // A block's distances are recomputed when an element nearest to one of
-  // its cells has changed by more than this many voxels since they were:
+  // The distances of the cells an element is nearest to are recomputed
+  // when it has changed by more than this many voxels since they were:
   // |mean move| + SurfacePoints::kPatchRadius |normal turn (rad)|, the most
   // any point of its surface disk moved (a bound on every distance change).
   static constexpr float kMoveTolerance = 0.1f;
@@ -101,18 +103,7 @@ class SurfaceDistanceLayer {
 
  private:
   struct WorkBlock;
-  // Packed keys are structured (x, y, z in 16-bit fields): mixed before the
-  // power-of-two tables take their low bits (MurmurHash3's finaliser).
-  struct KeyHash {
-    std::size_t operator()(std::uint64_t key) const {
-      key ^= key >> 33;
-      key *= 0xff51afd7ed558ccdull;
-      key ^= key >> 33;
-      key *= 0xc4ceb9fe1a85ec53ull;
-      key ^= key >> 33;
-      return static_cast<std::size_t>(key);
-    }
-  };
+  using KeyHash = SurfacePoints::KeyHash;
   // A voxel that holds returns.
   struct Site {
     Eigen::Vector3i key = Eigen::Vector3i::Zero();
@@ -132,6 +123,10 @@ class SurfaceDistanceLayer {
   // voxels, from sensor_map) cross; *freed receives those that became free.
   void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
              std::vector<Site*>* freed);
+  // True when a ray from sensor_map to the return whose voxel centre is
+  // end_voxel_centre_map passes through site's surface (a miss), not beside it.
+  bool RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
+                         const Eigen::Vector3f& end_voxel_centre_map) const;
   // Sets or clears site's bit in the occupancy masks.
   void SetOccupied(Site* site, bool occupied);
   // Claims cells for site from its voxel outwards (see the class comment).
@@ -162,6 +157,14 @@ class SurfaceDistanceLayer {
   tsl::robin_map<std::uint64_t, std::array<std::uint64_t, DistanceField::kBlockCells / 64>, KeyHash>
       occupied_masks_;
   std::uint64_t scans_ = 0;  // scans inserted (stamps Site::missed_in)
+  // Carve's cache of occupied_masks_ look-ups (valid during one Carve).
+  struct MaskCacheEntry {
+    std::uint64_t packed_block = ~std::uint64_t{0};  // the block (none)
+    BlockOccupancy occupancy;                        // what it holds
+  };
+  static constexpr std::size_t kMaskCacheSize = 4096;  // a power of two
+  std::vector<MaskCacheEntry> mask_cache_;
+  std::vector<std::pair<Eigen::Vector3i, Site*>> wave_queue_;  // Wave's queue (kept to reuse its memory)
   SurfaceDistanceCounts counts_;
 };
 

@@ -65,7 +65,21 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
 
 void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map,
                         const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map) {
-  Entry& entry = entries_[key];
+  Entry* found = Lookup(key);
+  if (found == nullptr) {
+    std::uint32_t slot = 0;
+    if (free_.empty()) {
+      slot = static_cast<std::uint32_t>(store_.size());
+      store_.emplace_back();
+    } else {
+      slot = free_.back();
+      free_.pop_back();
+      store_[slot] = Entry{};
+    }
+    index_.emplace(key, slot);
+    found = &store_[slot];
+  }
+  Entry& entry = *found;
   if (entry.weight >= kMaxWeight) {
     // Exponential average: the moments keep the weight of kMaxWeight returns.
     const float keep = (kMaxWeight - 1.0f) / kMaxWeight;
@@ -98,9 +112,9 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
       for (int dz = -1; dz <= 1; ++dz) {
         const Eigen::Vector3i neighbour(kx + dx, ky + dy, kz + dz);
         if ((neighbour.array() < 0).any() || (neighbour.array() > 0xffff).any()) continue;
-        const auto it = entries_.find(Pack(neighbour));
-        if (it == entries_.end()) continue;
-        const Entry& n = it->second;
+        const Entry* found = Lookup(Pack(neighbour));
+        if (found == nullptr) continue;
+        const Entry& n = *found;
         // Shift the neighbour's moments by its centre offset o:
         // sum d' = sum d + w o, sum d' d'^T = sum d d^T + o sum^T + sum o^T + w o o^T.
         const Eigen::Vector3f o =
@@ -123,9 +137,9 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
 }
 
 void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map) {
-  const auto it = entries_.find(key);
-  if (it == entries_.end()) return;
-  Entry& entry = it->second;
+  Entry* found = Lookup(key);
+  if (found == nullptr) return;
+  Entry& entry = *found;
   entry.element.mean_m = voxel_centre_map + entry.sum / entry.weight;
   const float refit_after =
       entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
@@ -148,24 +162,41 @@ void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_cent
   FitPlane(scatter, pooled.sum_view / pooled.weight, kMinSpread * resolution_m_, &element);
 }
 
-void SurfacePoints::Erase(std::uint64_t key) { entries_.erase(key); }
+void SurfacePoints::Erase(std::uint64_t key) {
+  const auto it = index_.find(key);
+  if (it == index_.end()) return;
+  free_.push_back(it->second);
+  store_[it->second] = Entry{};
+  index_.erase(it);
+}
+
+SurfacePoints::Entry* SurfacePoints::Lookup(std::uint64_t key) {
+  const auto it = index_.find(key);
+  return it == index_.end() ? nullptr : &store_[it->second];
+}
+
+const SurfacePoints::Entry* SurfacePoints::Lookup(std::uint64_t key) const {
+  const auto it = index_.find(key);
+  return it == index_.end() ? nullptr : &store_[it->second];
+}
 
 const SurfacePoints::Element* SurfacePoints::Find(std::uint64_t key) const {
-  const auto it = entries_.find(key);
-  if (it == entries_.end() || !it->second.has_element) return nullptr;
-  return &it->second.element;
+  const Entry* entry = Lookup(key);
+  if (entry == nullptr || !entry->has_element) return nullptr;
+  return &entry->element;
 }
 
 void SurfacePoints::ForEach(const std::function<void(std::uint64_t, const Element&)>& visit) const {
-  for (const auto& [key, entry] : entries_) {
+  for (const auto& [key, slot] : index_) {
+    const Entry& entry = store_[slot];
     if (entry.has_element) visit(key, entry.element);
   }
 }
 
 std::size_t SurfacePoints::MemoryBytes() const {
-  // Node (entry, key, next pointer) plus one bucket pointer per entry.
-  return entries_.size() * (sizeof(Entry) + sizeof(std::uint64_t) + 2 * sizeof(void*)) +
-         entries_.bucket_count() * sizeof(void*);
+  // The store's entries (erased slots included) plus the index's buckets (key, slot, hash bookkeeping).
+  return store_.size() * sizeof(Entry) + free_.capacity() * sizeof(std::uint32_t) +
+         index_.bucket_count() * (sizeof(std::uint64_t) + 2 * sizeof(std::uint32_t));
 }
 
 }  // namespace unimap::map

@@ -4,9 +4,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
+#include <deque>
+#include <vector>
 
 #include <Eigen/Core>
+#include <tsl/robin_map.h>
 
 namespace unimap::map {
 
@@ -48,6 +50,19 @@ class SurfacePoints {
   // signed_distances false: SignedDistance returns magnitudes only.
   // patch_radius_voxels: the disk's radius (kPatchRadius by default).
   explicit SurfacePoints(double resolution_m, bool signed_distances = true, float patch_radius_voxels = kPatchRadius);
+
+  // Hash of packed keys for power-of-two tables: they are structured (x, y,
+  // z in 16-bit fields), so they are mixed first (MurmurHash3's finaliser).
+  struct KeyHash {
+    std::size_t operator()(std::uint64_t key) const {
+      key ^= key >> 33;
+      key *= 0xff51afd7ed558ccdull;
+      key ^= key >> 33;
+      key *= 0xc4ceb9fe1a85ec53ull;
+      key ^= key >> 33;
+      return static_cast<std::size_t>(key);
+    }
+  };
 
   // The packed form of a 16-bit octree key (x, y, z).
   static std::uint64_t Pack(const Eigen::Vector3i& key) {
@@ -93,7 +108,7 @@ class SurfacePoints {
   // Calls visit(key, element) for every voxel with an element.
   void ForEach(const std::function<void(std::uint64_t, const Element&)>& visit) const;
 
-  std::size_t size() const { return entries_.size(); }
+  std::size_t size() const { return index_.size(); }
   // Approximate heap memory of the table (bytes).
   std::size_t MemoryBytes() const;
 
@@ -117,7 +132,13 @@ class SurfacePoints {
   bool signed_;               // SignedDistance is negative behind oriented disks
   float patch_radius_m_;      // the disk's radius (m)
   float patch_radius_sq_m2_;  // its square
-  std::unordered_map<std::uint64_t, Entry> entries_;
+  // Entries live in a deque (stable addresses: Find's pointers stay valid)
+  // indexed by an open-addressing table (a plane fit looks up 27 keys).
+  Entry* Lookup(std::uint64_t key);
+  const Entry* Lookup(std::uint64_t key) const;
+  tsl::robin_map<std::uint64_t, std::uint32_t, KeyHash> index_;
+  std::deque<Entry> store_;
+  std::vector<std::uint32_t> free_;  // store_ slots of erased entries
 };
 
 }  // namespace unimap::map

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 #include <unordered_map>
-#include <unordered_set>
+
 
 namespace unimap::matching {
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
@@ -17,7 +17,7 @@ std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>&
   std::vector<Eigen::Vector3f> kept;
   if (voxel_m > 0.0) {
     const double inv_voxel = 1.0 / voxel_m;
-    std::unordered_set<std::uint64_t> seen;
+    VoxelKeySet seen;
     seen.reserve(points.size());
     for (const auto& p : points) {
       if (seen.insert(VoxelKey(p, inv_voxel)).second) kept.push_back(p);

@@ -1,8 +1,10 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
+#include <tsl/robin_set.h>
 
 namespace unimap::matching {
 
@@ -20,6 +22,18 @@ inline std::uint64_t VoxelCellKey(const Eigen::Vector3i& cell) {
 // chosen with a seeded generator (0 = keep all).
 // The key of the cell (edge 1 / inv_voxel) holding p, as VoxelDownsample groups points.
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel);
+
+// Hash of VoxelCellKey / VoxelKey values for power-of-two tables: folds
+// the three 21-bit fields together, then spreads them over the word
+// (Fibonacci multiplier).
+struct VoxelKeyHash {
+  std::size_t operator()(std::uint64_t key) const {
+    const std::uint64_t folded = (key ^ (key >> 21) ^ (key >> 42)) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(folded ^ (folded >> 32));
+  }
+};
+// A set of such keys (open addressing).
+using VoxelKeySet = tsl::robin_set<std::uint64_t, VoxelKeyHash>;
 
 std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
                                              int max_points, std::uint64_t seed);

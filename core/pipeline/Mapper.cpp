@@ -148,7 +148,7 @@ std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
   // matching::VoxelDownsample of every key scan's points gives) without
   // gathering all of them first.
   std::vector<Eigen::Vector3f> points;
-  std::unordered_set<std::uint64_t> seen;
+  matching::VoxelKeySet seen;
   const double inv_voxel = voxel_m > 0.0 ? 1.0 / voxel_m : 0.0;
   for (std::size_t k = 0; k < key_points_body_.size(); ++k) {
     const Eigen::Isometry3f T_world_body = graph_.T_world_key(static_cast<int>(k)).cast<float>();

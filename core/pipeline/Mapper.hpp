@@ -3,13 +3,13 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Geometry>
 
 #include "graph/BackgroundOptimizer.hpp"
 #include "map/SubmapManager.hpp"
+#include "matching/VoxelDownsampler.hpp"
 #include "pipeline/EventSink.hpp"
 #include "pipeline/Localizer.hpp"
 #include "pipeline/LoopClosureFinder.hpp"
@@ -100,7 +100,7 @@ class Mapper : public EventSink {
   graph::BackgroundOptimizer optimizer_;
   std::vector<ScanPose> local_poses_;                       // every pose so far (local frame)
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
-  std::unordered_set<std::uint64_t> held_voxels_;           // voxels (local frame) key_points_body_ holds
+  matching::VoxelKeySet held_voxels_;  // voxels (local frame) key_points_body_ holds
   double path_m_ = 0.0;                                     // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;

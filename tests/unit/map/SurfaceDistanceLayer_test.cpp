@@ -150,5 +150,51 @@ TEST(SurfaceDistanceLayer, PointsOutsideTheKeyRangeAreDroppedAndCounted) {
   EXPECT_TRUE(layer.VoxelCentres().front().isApprox(V3(0.55f, 0.55f, 0.55f)));
 }
 
+// Returns on a patch of floor z = 0.03 over x in [x0, x1], |y| <= 0.5.
+std::vector<V3> FloorPatch(float x0, float x1, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> ux(x0, x1), uy(-0.5f, 0.5f);
+  std::normal_distribution<float> noise(0.0f, 0.003f);
+  std::vector<V3> points;
+  for (int i = 0; i < 1500; ++i) points.emplace_back(ux(rng), uy(rng), 0.03f + noise(rng));
+  return points;
+}
+
+// A sensor 0.12 m above a floor sees the floor 5-6 m away: its rays run
+// through the floor's voxel layer (z in [0, 0.1]) at 2-4 m without crossing
+// the floor. Those voxels keep their occupancy (OctoMap's ray insertion
+// would clear them after ~9 such scans).
+TEST(SurfaceDistanceLayer, GrazingRaysDoNotClearTheSurfaceTheyRunAlong) {
+  SurfaceDistanceLayer layer(Options());
+  for (std::uint32_t scan = 0; scan < 3; ++scan) layer.Insert(FloorPatch(2.0f, 4.0f, scan), V3(0.0f, 0.0f, 1.0f));
+  const std::size_t occupied = layer.counts().occupied;
+  ASSERT_GE(occupied, 190u);  // 2 m x 1 m of 0.1 m voxels
+  for (std::uint32_t scan = 0; scan < 20; ++scan) {
+    layer.Insert(FloorPatch(5.0f, 6.0f, 100 + scan), V3(0.0f, 0.0f, 0.12f));
+  }
+  EXPECT_EQ(layer.counts().voxels_cleared, 0u);
+  const auto field = layer.Export(V3::Zero(), 0.0, 1);
+  EXPECT_NEAR(field->Distance(V3(3.05f, 0.05f, 0.15f)), 0.12f, 0.01f);  // the floor under it is still there
+}
+
+// Rays that pass through a wall to returns behind it (a door opened) are
+// evidence that the wall is gone: its voxels are cleared and their cells refilled.
+TEST(SurfaceDistanceLayer, RaysThroughASurfaceClearIt) {
+  SurfaceDistanceLayer layer(Options());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+  std::vector<V3> wall, behind;
+  for (int i = 0; i < 1500; ++i) wall.emplace_back(2.02f, u(rng), 1.0f + u(rng));
+  for (int i = 0; i < 1500; ++i) behind.emplace_back(4.02f, 2.0f * u(rng), 1.0f + 2.0f * u(rng));
+  const V3 sensor(0.0f, 0.0f, 1.0f);
+  layer.Insert(wall, sensor);
+  const auto before = layer.Export(V3::Zero(), 0.0, 1);
+  EXPECT_LT(before->Distance(V3(1.95f, 0.05f, 1.05f)), 0.1f);
+  for (int scan = 0; scan < 20; ++scan) layer.Insert(behind, sensor);
+  EXPECT_GT(layer.counts().voxels_cleared, 50u);
+  const auto after = layer.Export(V3::Zero(), 0.0, 2);
+  EXPECT_EQ(after->Distance(V3(1.95f, 0.05f, 1.05f)), static_cast<float>(kClamp));
+}
+
 }  // namespace
 }  // namespace unimap::map
