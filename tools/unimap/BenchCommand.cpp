@@ -107,14 +107,17 @@ std::vector<BenchmarkFigure> StageFigures(const pipeline::StageTimes& t, double 
   return figures;
 }
 
-// Simulates a scenario with its default payload (not timed), then localises
-// it with the full mapper (timed, on the one pinned core, background threads included).
-std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const std::string& scenario_name) {
+// Simulates a scenario with its default payload or the shipped platform
+// `payload` (not timed), then localises it with the full mapper (timed, on
+// the one pinned core, background threads included).
+std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const std::string& scenario_name,
+                                              const std::string& payload = "") {
   namespace fs = std::filesystem;
   const fs::path file = fs::path(options.configs) / "scenarios" / (scenario_name + ".yaml");
   sim::SimulationOptions run;
   run.out_dir = fs::temp_directory_path() / ("unimap-bench-run-" + std::to_string(getpid()));
   if (options.quick) run.duration_s = 60.0;
+  if (!payload.empty()) run.payload = (fs::path(options.configs) / "platforms" / (payload + ".yaml")).string();
   struct Cleanup {
     fs::path dir;
     ~Cleanup() {
@@ -288,6 +291,19 @@ std::vector<BenchmarkCase> Cases() {
        "`unimap run` on the simulated 1.1 m-wide hallway loop walked at 0.5 m/s with the rotating Hokuyo. "
        "Targets: real-time factor >= 2, ate_rmse_m <= 0.10.",
        [](const BenchOptions& o) { return LocaliseScenario(o, "narrow_hallway"); }},
+      {"run: patio, fixed VLP-16 (robustness matrix)",
+       "The robustness matrix's slowest pair (docs/robustness.md): `unimap run` with the fixed VLP-16's platform "
+       "file (0.1 m map) on the simulated patio. Target (issue 20): real-time factor >= 5.",
+       [](const BenchOptions& o) { return LocaliseScenario(o, "patio", "fixed_vlp16"); }},
+      {"run: patio, rotating Hokuyo (robustness matrix)",
+       "The robustness matrix's second slowest pair: `unimap run` with the rotating Hokuyo's platform file on the "
+       "simulated patio. Target (issue 20): real-time factor >= 5.",
+       [](const BenchOptions& o) { return LocaliseScenario(o, "patio", "rotating_hokuyo"); }},
+      {"run: tunnel, fixed VLP-16 (robustness matrix)",
+       "The robustness matrix's third slowest pair: `unimap run` with the fixed VLP-16's platform file on the "
+       "simulated tunnel (its dataset takes about 5 GB of temporary space while it runs). Target (issue 20): "
+       "real-time factor >= 5.",
+       [](const BenchOptions& o) { return LocaliseScenario(o, "tunnel", "fixed_vlp16"); }},
       {"run: KITTI 00 frames 0-15, HDL-64, beside KISS-ICP",
        "`unimap convert` and `unimap run --platform configs/platforms/kitti_hdl64.yaml` on the real KITTI 00 sweeps "
        "0-15 (../shared/data/kitti00, 120k points each, no IMU: constant-velocity prior), and KISS-ICP's C++ core "
