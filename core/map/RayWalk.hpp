@@ -38,8 +38,12 @@ std::uint8_t QuarterMask(const std::array<std::uint64_t, DistanceField::kBlockCe
 // range only). lookup(block_key) -> BlockOccupancy says what a block holds;
 // blocks and quarters holding no occupied voxel (and not the end) are
 // crossed in one step. visit returns true when it changed the occupancy:
-// the walk then looks its block up again. The same rays visit the same
-// voxels as a voxel-by-voxel walk; only empty space is skipped.
+// the walk then looks its block up again. Only empty space is skipped: a
+// ray visits the voxels a voxel-by-voxel walk visits, except where it
+// leaves a skipped cube exactly through a voxel edge or corner (a tie,
+// e.g. a sensor at integer key coordinates): the walk resumes in the voxel
+// past the tie and the voxels the ray only touches there are not visited
+// (a voxel-by-voxel walk visits one of them, by its tie-breaking order).
 template <class Lookup, class Visit>
 void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Lookup&& lookup, Visit&& visit) {
   constexpr int kEdge = DistanceField::kBlockEdge;
