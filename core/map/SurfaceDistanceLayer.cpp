@@ -333,7 +333,7 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
   std::uint32_t recorded = 0;  // neighbourhood blocks already in site->blocks
   const Site* neighbourhood_site = nullptr;
   Eigen::Vector3i site_block = Eigen::Vector3i::Zero();
-  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried (not local)
+  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried (general path)
   WorkBlock* cached = nullptr;
   for (std::size_t head = 0; head < queue->size(); ++head) {
     const auto [cell, site] = (*queue)[head];
@@ -345,7 +345,8 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
     }
     Eigen::Vector3i recorded_key = Eigen::Vector3i::Constant(-1);  // the last block added to site->blocks
     // Inside the key range with a margin of a block: neighbourhood
-    // coordinates need no range checks.
+    // coordinates need no range checks. Otherwise (the key range's edge,
+    // or reach_ > kEdge) the general path below looks blocks up per cell.
     if (local && (site_block.array() >= 1).all() && (site_block.array() < (kMaxKey >> kShiftBlock) - 1).all()) {
       const Eigen::Vector3i base = (site_block.array() - 1) * kEdge;  // lowest voxel of the neighbourhood
       for (const Eigen::Vector3i& step : kSteps) {
@@ -379,13 +380,7 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
       const int sq = (next - site->key).squaredNorm();
       if (sq > reach_sq) continue;
       const Eigen::Vector3i block_key = BlockOf(next);
-      int slot = -1;
-      if (local) {
-        const Eigen::Vector3i r = block_key - site_block + Eigen::Vector3i::Ones();
-        slot = (r.x() * 3 + r.y()) * 3 + r.z();
-        cached = neighbourhood[static_cast<std::size_t>(slot)];
-        if (cached == nullptr) cached = neighbourhood[static_cast<std::size_t>(slot)] = BlockAt(next, true);
-      } else if (block_key != cached_key) {
+      if (block_key != cached_key) {
         cached = BlockAt(next, true);
         cached_key = block_key;
       }
@@ -395,14 +390,7 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
       cached->owner[offset] = site;
       cached->Touch(offset);
       ++counts_.cells_claimed;
-      if (local) {
-        if ((recorded >> slot & 1u) == 0) {
-          recorded |= 1u << slot;
-          if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
-            site->blocks.push_back(cached);
-          }
-        }
-      } else if (block_key != recorded_key) {
+      if (block_key != recorded_key) {
         recorded_key = block_key;
         if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
           site->blocks.push_back(cached);

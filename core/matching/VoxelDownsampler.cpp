@@ -5,8 +5,8 @@
 #include <random>
 #include <unordered_map>
 
-
 namespace unimap::matching {
+
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
   const auto cell = [&](float v) { return static_cast<int>(std::floor(v * inv_voxel)); };
   return VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())));

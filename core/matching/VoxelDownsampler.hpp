@@ -17,9 +17,6 @@ inline std::uint64_t VoxelCellKey(const Eigen::Vector3i& cell) {
   return (bits(cell.x()) << 42) | (bits(cell.y()) << 21) | bits(cell.z());
 }
 
-// Keeps one point per voxel (the first one seen, so the result is
-// deterministic and a real measurement), then at most max_points of them
-// chosen with a seeded generator (0 = keep all).
 // The key of the cell (edge 1 / inv_voxel) holding p, as VoxelDownsample groups points.
 std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel);
 
@@ -35,6 +32,9 @@ struct VoxelKeyHash {
 // A set of such keys (open addressing).
 using VoxelKeySet = tsl::robin_set<std::uint64_t, VoxelKeyHash>;
 
+// Keeps one point per voxel (the first one seen, so the result is
+// deterministic and a real measurement), then at most max_points of them
+// chosen with a seeded generator (0 = keep all).
 std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
                                              int max_points, std::uint64_t seed);
 
