@@ -30,3 +30,10 @@
 #else
 #define UNIMAP_CONFORMANCE_API UNIMAP_HELPER_IMPORT
 #endif
+
+// Exported by libunimap_mapper (the online mapper API).
+#if defined(UNIMAP_MAPPER_BUILDING)
+#define UNIMAP_MAPPER_API UNIMAP_HELPER_EXPORT
+#else
+#define UNIMAP_MAPPER_API UNIMAP_HELPER_IMPORT
+#endif
