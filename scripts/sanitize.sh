@@ -31,7 +31,7 @@ asan() {  # asan [ctest args...]
   if [ "$MODE" = asan-unit ]; then
     # The CI subset, the fuzz replays and what they load (plugins, test plugins).
     cmake --build "$ASAN_DIR" -j2 --target unimap_payload_fixed_3d unimap_payload_rotating_3d \
-      unimap_payload_rotating_2d unimap_broken_plugins unit_sdk unit_config unit_plugins unit_io unit_eval \
+      unimap_payload_rotating_2d unimap_broken_plugins unit_sdk unit_config unit_plugins unit_io unit_eval unit_api \
       $(cd "$ASAN_DIR" && make help | sed -n 's/^\.\.\. \(fuzz_replay_[a-z_]*\)$/\1/p' | grep -v '^fuzz_replay_bt$')
   else
     cmake --build "$ASAN_DIR" -j2
@@ -58,7 +58,7 @@ tsan() {
 
 case "$MODE" in
   asan) if [ -n "${CTEST_EXCLUDE:-}" ]; then asan -E "$CTEST_EXCLUDE"; else asan; fi ;;
-  asan-unit) asan -R '^(unit_(sdk|config|plugins|io|eval)\.|fuzz\.)' -E '^fuzz\.bt$' ;;
+  asan-unit) asan -R '^(unit_(sdk|config|plugins|io|eval|api)\.|fuzz\.)' -E '^fuzz\.bt$' ;;
   tsan) tsan ;;
   all) if [ -n "${CTEST_EXCLUDE:-}" ]; then asan -E "$CTEST_EXCLUDE"; else asan; fi; tsan ;;
   *) echo "usage: $0 [asan|asan-unit|tsan|all]" >&2; exit 2 ;;

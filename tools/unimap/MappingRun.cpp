@@ -33,6 +33,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     pipeline::MapperOptions mapper_options =
         pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
     mapper_options.localizer.gpf.threads = options.threads;
+    mapper_options.localizer.gpf.seed = options.seed;
     mapper_options.loop_search.enabled = !options.no_loop_closure;
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
@@ -62,6 +63,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
     outputs.odometry_file = kOdometryFile;
+    outputs.gpf_seed = options.seed;
     outputs.map_file = "map.ply";  // (read without PCL)
     outputs.motion = motion.name;
     outputs.motion_reason = motion.reason;

@@ -1,6 +1,7 @@
 #pragma once
 // The mapping job shared by `unimap run` and `unimap demo`: map a dataset
 // with a platform and write every output into a folder.
+#include <cstdint>
 #include <string>
 
 namespace unimap::cli {
@@ -11,6 +12,7 @@ struct MappingRunOptions {
   std::string out_dir;          // output folder
   double max_duration_s = 0.0;  // 0: the whole dataset
   int threads = 1;              // GPF threads
+  std::uint64_t seed = 1;       // GPF sampling seed (matching::GpfOptions::seed)
   bool quiet = false;           // no progress line
   bool no_loop_closure = false;  // map without loop-closure search
   bool no_line_gap_fill = false;  // line scans: the distance map holds the measured stripes only

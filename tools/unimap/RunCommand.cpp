@@ -23,6 +23,9 @@ void AddRunCommand(CLI::App* app) {
   cmd->add_flag("--force-payload", options->force_payload,
                 "Run a dataset recorded for another payload than the platform's (an error otherwise)");
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
+  cmd->add_option("--seed", options->seed,
+                  "Sampling seed of the particle filter (default 1); a run is deterministic for a seed and "
+                  "thread count, so seeds show how much a result owes to chance");
   cmd->add_flag("--quiet", options->quiet, "No progress line");
   cmd->add_flag("--no-loop-closure", options->no_loop_closure, "Do not search for loop closures");
   cmd->add_flag("--trace", options->trace,

@@ -151,6 +151,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run.Add("payload", in.payload);
   run.Add("dataset", in.data_dir);
   run.Add("gpf_threads", in.gpf_threads);
+  run.Add("gpf_seed", static_cast<std::size_t>(in.gpf_seed));
   if (!in.motion.empty()) {
     run.Add("motion", in.motion);
     run.Add("motion_reason", in.motion_reason);

@@ -2,6 +2,7 @@
 // The outputs shared by `unimap run` and `unimap localize`: run.json, the
 // console summary and, with ground truth, the evaluation.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@ struct RunOutputsInput {
   std::string payload;                 // run.json "payload" (plugin name)
   std::string data_dir;                // run.json "dataset"; its groundtruth.tum is the truth
   std::size_t gpf_threads = 1;         // run.json "gpf_threads"
+  std::uint64_t gpf_seed = 1;          // run.json "gpf_seed"
   std::string motion;                  // run.json "motion": the prediction used (empty: not reported)
   std::string motion_reason;           // run.json "motion_reason": why
   pipeline::RunSummary summary;        // what the run did and how fast

@@ -34,7 +34,14 @@ case $case_name in
     map=$(json_number "$work/out/metrics.json" map_error_anchored_mean_m)
     echo "ate_rmse_m=$ate map_error_anchored_mean_m=$map"
     below "$ate" 0.1 || fail "ate_rmse_m $ate is not below 0.1 m"
-    below "$map" 0.05 || fail "map_error_anchored_mean_m $map is not below 0.05 m" ;;
+    below "$map" 0.05 || fail "map_error_anchored_mean_m $map is not below 0.05 m"
+    # --seed: the particle filter's sampling seed, recorded in run.json.
+    [ "$(json_number "$work/out/run.json" gpf_seed)" = 1 ] || fail "run.json gpf_seed is not 1 by default"
+    code=$(run run --platform "$hokuyo" --data "$work/data" --out "$work/seed2" --quiet --seed 2)
+    [ "$code" = 0 ] || fail "run --seed 2 exit $code"
+    [ "$(json_number "$work/seed2/run.json" gpf_seed)" = 2 ] || fail "run.json gpf_seed is not 2 with --seed 2"
+    cmp -s "$work/out/trajectory_odometry.tum" "$work/seed2/trajectory_odometry.tum" &&
+      fail "--seed 2 gave the poses of seed 1" ;;
   plane_matching_static)
     # The rotating Hokuyo standing still for the first 8 s of the hallway,
     # its motor at 31.7 rpm so that line azimuths do not repeat: each line
