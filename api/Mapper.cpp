@@ -79,6 +79,7 @@ class Mapper::Impl {
     {
       std::lock_guard<std::mutex> lock(work_mutex_);
       stop_ = true;
+      abandon_ = true;  // what is still queued is dropped (Finish processes it)
     }
     work_ready_.notify_all();
     if (worker_.joinable()) worker_.join();
@@ -183,7 +184,7 @@ class Mapper::Impl {
       {
         std::unique_lock<std::mutex> lock(work_mutex_);
         work_ready_.wait(lock, [this] { return stop_ || !work_.empty(); });
-        if (work_.empty()) return;  // stopped
+        if (work_.empty() || abandon_) return;  // stopped
         event = std::move(work_.front());
         work_.pop_front();
       }
@@ -250,7 +251,8 @@ class Mapper::Impl {
   mutable std::mutex work_mutex_;  // kLive: guards the queue, stop_ and worker_error_
   std::condition_variable work_ready_;
   std::deque<io::DatasetEvent> work_;
-  bool stop_ = false;
+  bool stop_ = false;     // the worker returns once the queue is empty
+  bool abandon_ = false;  // ... or at once (destruction)
   std::exception_ptr worker_error_;
   std::thread worker_;  // last: started once everything above exists
 };

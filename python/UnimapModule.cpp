@@ -177,9 +177,9 @@ PYBIND11_MODULE(unimap, m) {
       .def("add_imu",
            [](unimap::Mapper& self, double time_s, const Eigen::Vector3d& gyro_rad_s,
               const Eigen::Vector3d& accel_m_s2) { self.AddImu({time_s, accel_m_s2, gyro_rad_s}); },
-           py::arg("time_s"), py::arg("gyro_rad_s"), py::arg("accel_m_s2"))
+           py::arg("time_s"), py::arg("gyro_rad_s"), py::arg("accel_m_s2"), py::call_guard<py::gil_scoped_release>())
       .def("add_encoder", [](unimap::Mapper& self, double time_s, double angle_rad) { self.AddEncoder({time_s, angle_rad}); },
-           py::arg("time_s"), py::arg("angle_rad"))
+           py::arg("time_s"), py::arg("angle_rad"), py::call_guard<py::gil_scoped_release>())
       .def("add_odometry",
            [](unimap::Mapper& self, double time_s, const Eigen::Matrix4d& T_odom_body) {
              unimap::OdometrySample s;
@@ -187,23 +187,46 @@ PYBIND11_MODULE(unimap, m) {
              s.T_odom_body.matrix() = T_odom_body;
              self.AddOdometry(s);
            },
-           py::arg("time_s"), py::arg("T_odom_body"))
+           py::arg("time_s"), py::arg("T_odom_body"), py::call_guard<py::gil_scoped_release>())
       .def("add_scan",
            [](unimap::Mapper& self, const FloatRows& points, std::optional<FloatRows> times,
               std::optional<double> start_time_s, std::optional<double> end_time_s,
               std::optional<py::array_t<std::uint16_t>> rings) {
-             self.AddScan(MakeSweep(points, std::move(times), start_time_s, end_time_s, std::move(rings)));
+             const unimap::RawScan scan = MakeSweep(points, std::move(times), start_time_s, end_time_s, std::move(rings));
+             const py::gil_scoped_release release;  // other Python threads run while the scan is processed
+             self.AddScan(scan);
            },
            py::arg("points"), py::arg("times") = py::none(), py::arg("start_time_s") = py::none(),
            py::arg("end_time_s") = py::none(), py::arg("rings") = py::none())
       .def("add", [](unimap::Mapper& self, const py::tuple& event) {
              // An event of read_dataset.
+             // (Cast with the GIL held; processed without it.)
              const std::string kind = event[0].cast<std::string>();
-             if (kind == "imu") return self.AddImu(event[1].cast<unimap::ImuSample>());
-             if (kind == "encoder") return self.AddEncoder(event[1].cast<unimap::EncoderSample>());
-             if (kind == "odometry") return self.AddOdometry(event[1].cast<unimap::OdometrySample>());
-             if (kind == "scan") return self.AddScan(event[1].cast<const unimap::RawScan&>());
-             if (kind == "line") return self.AddScan(event[1].cast<const unimap::LineScan&>());
+             if (kind == "imu") {
+               const auto sample = event[1].cast<unimap::ImuSample>();
+               const py::gil_scoped_release release;
+               return self.AddImu(sample);
+             }
+             if (kind == "encoder") {
+               const auto sample = event[1].cast<unimap::EncoderSample>();
+               const py::gil_scoped_release release;
+               return self.AddEncoder(sample);
+             }
+             if (kind == "odometry") {
+               const auto sample = event[1].cast<unimap::OdometrySample>();
+               const py::gil_scoped_release release;
+               return self.AddOdometry(sample);
+             }
+             if (kind == "scan") {
+               const auto& scan = event[1].cast<const unimap::RawScan&>();
+               const py::gil_scoped_release release;
+               return self.AddScan(scan);
+             }
+             if (kind == "line") {
+               const auto& scan = event[1].cast<const unimap::LineScan&>();
+               const py::gil_scoped_release release;
+               return self.AddScan(scan);
+             }
              throw unimap::InputError("add: unknown event kind '" + kind + "'");
            },
            py::arg("event"))

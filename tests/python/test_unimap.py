@@ -5,6 +5,7 @@ unimap executable; UNIMAP_SOURCE_DIR is the repository."""
 import os
 import subprocess
 import tempfile
+import threading
 import unittest
 
 import numpy as np
@@ -86,6 +87,26 @@ class MappingTest(unittest.TestCase):
         for kind in ("line", "encoder", "imu"):
             for event in by_kind[kind]:
                 mapper.add(event)
+        mapper.finish()
+        np.testing.assert_array_equal(mapper.poses(), tum_rows(os.path.join(self.run_dir, "trajectory_odometry.tum")))
+
+
+    def test_one_thread_per_stream(self):
+        # Three Python threads add their streams concurrently (the mapper
+        # releases the GIL while it processes): the same poses.
+        by_kind = {"imu": [], "encoder": [], "line": []}
+        for kind, sample in unimap.read_dataset(self.data):
+            by_kind[kind].append((kind, sample))
+        mapper = unimap.Mapper(HOKUYO)
+
+        def feed(events):
+            for event in events:
+                mapper.add(event)
+        threads = [threading.Thread(target=feed, args=(events,)) for events in by_kind.values()]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
         mapper.finish()
         np.testing.assert_array_equal(mapper.poses(), tum_rows(os.path.join(self.run_dir, "trajectory_odometry.tum")))
 
