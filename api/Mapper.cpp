@@ -135,11 +135,12 @@ class Mapper::Impl {
 
   MapperStatus Status() const {
     MapperStatus status;
+    double newest_added_s = 0.0;
     {
       std::lock_guard<std::mutex> lock(add_mutex_);
       status.scans_added = scans_added_;
       status.events_waiting = merge_.size();
-      status.lag_s = newest_added_s_;
+      newest_added_s = newest_added_s_;
     }
     {
       std::lock_guard<std::mutex> lock(work_mutex_);
@@ -153,7 +154,7 @@ class Mapper::Impl {
     status.key_scans = stats.key_scans;
     status.submaps = stats.submaps;
     status.loop_closures = stats.loop_closures;
-    status.lag_s = newest_processed_s_ ? std::max(0.0, status.lag_s - *newest_processed_s_) : 0.0;
+    status.lag_s = newest_processed_s_ ? std::max(0.0, newest_added_s - *newest_processed_s_) : 0.0;
     return status;
   }
 
@@ -164,7 +165,7 @@ class Mapper::Impl {
   // (kSynchronous) or queued for the worker (kLive). Holds add_mutex_.
   void Release(bool flush) {
     while (std::optional<io::DatasetEvent> event = merge_.Pop(flush)) {
-      if (!worker_.joinable()) {
+      if (settings_.mode == MapperMode::kSynchronous) {
         std::lock_guard<std::mutex> lock(process_mutex_);
         Process(std::move(*event));
         continue;
@@ -270,8 +271,9 @@ void Mapper::AddScan(const RawScan& scan) {
   impl_->Add(api::Stream::kScan, scan.end_time_s, io::ScanRecord(scan));
 }
 void Mapper::AddScan(const LineScan& scan) {
-  const io::ScanRecord record(scan);
-  impl_->Add(api::Stream::kScan, io::ScanEndTime(record), record);
+  io::ScanRecord record(scan);
+  const double end_time_s = io::ScanEndTime(record);
+  impl_->Add(api::Stream::kScan, end_time_s, std::move(record));
 }
 void Mapper::SetPoseCallback(std::function<void(const MapperPose&)> callback) {
   impl_->SetPoseCallback(std::move(callback));

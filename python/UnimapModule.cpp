@@ -36,6 +36,9 @@ py::array_t<double> PoseRows(const std::vector<Pose>& poses, Transform transform
   }
   return out;
 }
+py::array_t<double> PoseRows(const std::vector<unimap::StampedPose>& poses) {
+  return PoseRows(poses, [](const unimap::StampedPose& p) -> const Eigen::Isometry3d& { return p.T_map_body; });
+}
 
 // A sweep from an (N, 3) or (N, 4) array (x y z [intensity], LiDAR frame),
 // optional per-point times and rings.
@@ -128,14 +131,16 @@ PYBIND11_MODULE(unimap, m) {
                                return out;
                              })
       .def_property_readonly("times", [](const unimap::RawScan& s) {
-        std::vector<double> t;
-        for (const unimap::Point& p : s.points) t.push_back(p.time_s);
-        return py::array_t<double>(static_cast<py::ssize_t>(t.size()), t.data());
+        py::array_t<double> out(static_cast<py::ssize_t>(s.points.size()));
+        auto t = out.mutable_unchecked<1>();
+        for (std::size_t i = 0; i < s.points.size(); ++i) t(static_cast<py::ssize_t>(i)) = s.points[i].time_s;
+        return out;
       })
       .def_property_readonly("rings", [](const unimap::RawScan& s) {
-        std::vector<std::uint16_t> r;
-        for (const unimap::Point& p : s.points) r.push_back(p.ring);
-        return py::array_t<std::uint16_t>(static_cast<py::ssize_t>(r.size()), r.data());
+        py::array_t<std::uint16_t> out(static_cast<py::ssize_t>(s.points.size()));
+        auto r = out.mutable_unchecked<1>();
+        for (std::size_t i = 0; i < s.points.size(); ++i) r(static_cast<py::ssize_t>(i)) = s.points[i].ring;
+        return out;
       });
   py::class_<unimap::LineScan>(m, "LineScan")
       .def(py::init<>())
@@ -247,9 +252,7 @@ PYBIND11_MODULE(unimap, m) {
            "The filter's scan poses (odometry frame) as (N, 8) TUM rows")
       .def("trajectory",
            [](const unimap::Mapper& self) {
-             return PoseRows(self.Trajectory(), [](const unimap::StampedPose& p) -> const Eigen::Isometry3d& {
-               return p.T_map_body;
-             });
+             return PoseRows(self.Trajectory());
            },
            "The optimised trajectory (world frame) as (N, 8) TUM rows")
       .def("map_points",
@@ -304,9 +307,7 @@ PYBIND11_MODULE(unimap, m) {
                                return d;
                              })
       .def("ground_truth", [](const unimap::Dataset& self) {
-        return PoseRows(self.GroundTruth(), [](const unimap::StampedPose& p) -> const Eigen::Isometry3d& {
-          return p.T_map_body;
-        });
+        return PoseRows(self.GroundTruth());
       });
   m.def(
       "read_dataset", [](const std::string& folder) { return std::make_unique<unimap::Dataset>(folder); },
