@@ -15,7 +15,7 @@
 #include "io/PcdWriter.hpp"
 #include "io/PlyWriter.hpp"
 #include "pipeline/Mapper.hpp"
-#include "unimap/CoreParameters.hpp"
+#include "pipeline/MapperSettings.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -45,10 +45,9 @@ std::array<bool, api::kStreams> ExpectedStreams(const MapperSettings& settings, 
 pipeline::MapperOptions OptionsFor(const MapperSettings& settings, const Platform& platform) {
   // As `unimap run` builds them (tools/unimap/MappingRun.cpp), so that
   // kSynchronous gives its results.
-  pipeline::MapperOptions options =
-      pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+  pipeline::MapperOptions options = pipeline::MapperOptionsFor(platform);
   options.localizer.gpf.threads = settings.threads;
-  options.loop_search.enabled = settings.loop_closure;
+  if (!settings.loop_closure) options.loop_search.enabled = false;
   options.localizer.motion.source = SourceOf(settings.motion);
   if (settings.mode == MapperMode::kLive) {
     options.localizer.wait_for_map = false;

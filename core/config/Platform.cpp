@@ -73,6 +73,7 @@ Platform BuildPlatform(const PlatformFile& file, const std::filesystem::path& ba
   }
   platform.parameters = std::move(resolved.parameters);
   platform.effective = std::move(resolved.effective);
+  platform.mapper_settings = file.mapper_settings();
   return platform;
 }
 

@@ -158,14 +158,15 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
     }
     std::map<std::string, int> top_lines;  // top-level key -> first line
     std::map<std::string, int> parameter_lines;  // dotted key -> first line
+    std::map<std::string, int> mapper_lines;     // the same for `mapper:`
     for (auto it = root.begin(); it != root.end(); ++it) {
       const YAML::Node key_node = it->first;
       const YAML::Node value_node = it->second;
       const int line = LineOf(key_node);
       const std::string key = key_node.IsScalar() ? key_node.Scalar() : std::string();
-      if (key != "plugin" && key != "parameters") {
+      if (key != "plugin" && key != "parameters" && key != "mapper") {
         throw ConfigError(file, line, key,
-                          "unknown top-level key; expected 'plugin' or 'parameters'");
+                          "unknown top-level key; expected 'plugin', 'parameters' or 'mapper'");
       }
       const auto [previous, inserted] = top_lines.emplace(key, line);
       if (!inserted) {
@@ -180,6 +181,15 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
         }
         result.plugin_ = value_node.Scalar();
         result.plugin_line_ = line;
+      } else if (key == "mapper") {
+        if (value_node.IsNull()) continue;  // nothing under it: the defaults
+        if (!value_node.IsMap()) {
+          throw ConfigError(file, line, key, "expected a map of mapper settings, got " + KindOf(value_node));
+        }
+        std::vector<YAML::Node> groups;
+        // Collected under "mapper." so that errors name the full key; kept below it.
+        CollectOverrides(value_node, key, file, &result.mapper_settings_, &mapper_lines, &groups);
+        for (ParameterOverride& setting : result.mapper_settings_) setting.key.erase(0, key.size() + 1);
       } else if (!value_node.IsNull()) {  // `parameters:` with nothing under it overrides nothing
         if (!value_node.IsMap()) {
           throw ConfigError(file, line, key,

@@ -8,20 +8,15 @@
 
 #include "unimap/Export.hpp"
 #include "unimap/ParameterValue.hpp"
+#include "unimap/Platform.hpp"
 
 namespace unimap {
-
-// One `parameters:` entry of a platform file, flattened to its dotted key.
-struct ParameterOverride {
-  std::string key;       // dotted key ("extrinsic.body_motor.rpy_deg")
-  ParameterValue value;  // as written: integer, number, bool, string or list of numbers
-  int line = 0;          // 1-based line of the key in the file
-};
 
 // The contents of a platform file, syntax-checked but not yet validated
 // against any plugin:
 //   plugin: <payload name or library path>
 //   parameters: { <key>: <value or nested map>, ... }
+//   mapper: { <section>: { <key>: <value> }, ... }   (optional: tuning)
 class UNIMAP_CORE_API PlatformFile {
  public:
   // Parses YAML text; file_label names the text in errors. Throws ConfigError
@@ -41,12 +36,16 @@ class UNIMAP_CORE_API PlatformFile {
   int plugin_line() const { return plugin_line_; }
   // Overrides in file order; keys are unique.
   const std::vector<ParameterOverride>& overrides() const { return overrides_; }
+  // The `mapper:` section's settings in file order (keys below `mapper.`,
+  // unique); checked against the mapper's options, not here.
+  const std::vector<ParameterOverride>& mapper_settings() const { return mapper_settings_; }
 
  private:
   std::string file_;
   std::string plugin_;
   int plugin_line_ = 0;
   std::vector<ParameterOverride> overrides_;
+  std::vector<ParameterOverride> mapper_settings_;
 };
 
 // Converts one plain YAML scalar to a value: int64 if it is entirely an

@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::estimation {
 
 // Noise model and initial uncertainty of the error-state Kalman filter.
@@ -17,6 +19,8 @@ struct EskfOptions {
   double initial_sigma_gyro_bias_rad_s = 0.005;  // initial gyroscope bias standard deviation
   double max_imu_gap_s = 0.1;                // longer gaps between IMU samples are input errors
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
 };
 

@@ -50,4 +50,18 @@ bool ParseMotionSource(const std::string& text, MotionSource* source) {
   return true;
 }
 
+void MotionPriorOptions::VisitFields(options::FieldVisitor& v) {
+  v.SetElsewhere("source", "the dataset's streams or `unimap run --motion`");
+  v.Field("odometry_sigma_per_m", &odometry_sigma_per_m, "m/m");
+  v.Field("odometry_sigma_rad_per_rad", &odometry_sigma_rad_per_rad, "rad/rad");
+  v.Field("odometry_sigma_rad_per_m", &odometry_sigma_rad_per_m, "rad/m");
+  v.Field("odometry_min_sigma_m", &odometry_min_sigma_m, "m");
+  v.Field("odometry_min_sigma_rad", &odometry_min_sigma_rad, "rad");
+  v.Field("max_odometry_gap_s", &max_odometry_gap_s, "s");
+  v.Field("velocity_sigma_m_s", &velocity_sigma_m_s, "m/s");
+  v.Field("rate_sigma_rad_s", &rate_sigma_rad_s, "rad/s");
+  v.Field("max_speed_m_s", &max_speed_m_s, "m/s");
+  v.Field("max_rate_rad_s", &max_rate_rad_s, "rad/s");
+}
+
 }  // namespace unimap::estimation

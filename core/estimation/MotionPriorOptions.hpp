@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::estimation {
 
 // Where the localiser's prediction between scans comes from.
@@ -28,6 +30,8 @@ struct MotionPriorOptions {
                                                  // expected speed, the prediction's spread (m/s)
   double max_rate_rad_s = 1.0;                   // ... and turn rate (rad/s)
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   // True when every field is in range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const;
 };

@@ -92,4 +92,41 @@ LoopClosureOptions LoopClosureOptions::ForVoxel(double voxel_m) {
   return o;
 }
 
+void LoopClosureOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("search_resolution_m", &search_resolution_m, "m");
+  v.Field("search_kernel_m", &search_kernel_m, "m");
+  v.Field("search_levels", &search_levels, "count");
+  v.Field("fine_resolution_m", &fine_resolution_m, "m");
+  v.Field("fine_clamp_m", &fine_clamp_m, "m");
+  v.Field("normal_cell_m", &normal_cell_m, "m");
+  v.Field("planarity_ratio", &planarity_ratio, "");
+  v.Field("search_voxel_m", &search_voxel_m, "m");
+  v.Field("max_search_points", &max_search_points, "count");
+  v.Field("refine_voxel_m", &refine_voxel_m, "m");
+  v.Field("max_refine_points", &max_refine_points, "count");
+  v.Field("min_scan_points", &min_scan_points, "count");
+  v.Field("seed", &seed, "");
+  v.Field("z_window_m", &z_window_m, "m");
+  v.Field("yaw_window_rad", &yaw_window_rad, "rad");
+  v.Field("min_yaw_step_rad", &min_yaw_step_rad, "rad");
+  v.Field("max_yaw_step_rad", &max_yaw_step_rad, "rad");
+  v.Field("ambiguity_margin_m", &ambiguity_margin_m, "m");
+  v.Field("max_candidates", &max_candidates, "count");
+  v.Field("min_search_score", &min_search_score, "");
+  v.Field("candidate_score_ratio", &candidate_score_ratio, "");
+  v.Field("max_iterations", &max_iterations, "count");
+  v.Field("huber_m", &huber_m, "m");
+  v.Field("inlier_distance_m", &inlier_distance_m, "m");
+  v.Field("min_score", &min_score, "");
+  v.Field("distinct_translation_m", &distinct_translation_m, "m");
+  v.Field("distinct_rotation_rad", &distinct_rotation_rad, "rad");
+  v.Field("ambiguity_floor", &ambiguity_floor, "");
+  v.Field("max_ambiguity", &max_ambiguity, "");
+  v.Field("max_position_sigma_m", &max_position_sigma_m, "m");
+  v.Field("max_rotation_sigma_rad", &max_rotation_sigma_rad, "rad");
+  v.Field("effective_points", &effective_points, "");
+  v.Field("min_sigma_position_m", &min_sigma_position_m, "m");
+  v.Field("min_sigma_rotation_rad", &min_sigma_rotation_rad, "rad");
+}
+
 }  // namespace unimap::graph

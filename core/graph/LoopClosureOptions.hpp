@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <string>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::graph {
 
 // Settings of the loop-closure matcher (LoopClosureMatcher): a scan matched
@@ -63,6 +65,8 @@ struct LoopClosureOptions {
   double min_sigma_position_m = 0.02;   // added in quadrature to the position standard deviations (m)
   double min_sigma_rotation_rad = 0.003;  // ... and to the rotation ones (rad)
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   // True when every field is in range; otherwise false with the reason in
   // *why (when why is not null).
   bool IsValid(std::string* why) const;

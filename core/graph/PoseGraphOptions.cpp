@@ -28,4 +28,14 @@ bool PoseGraphOptions::IsValid(std::string* why) const {
   return true;
 }
 
+void PoseGraphOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("max_iterations", &max_iterations, "count");
+  v.Field("loop_closure_huber_scale", &loop_closure_huber_scale, "");
+  v.Field("threads", &threads, "count");
+  v.Field("max_solver_time_s", &max_solver_time_s, "s");
+  v.Field("function_tolerance", &function_tolerance, "");
+  v.Field("gradient_tolerance", &gradient_tolerance, "");
+  v.Field("parameter_tolerance", &parameter_tolerance, "");
+}
+
 }  // namespace unimap::graph

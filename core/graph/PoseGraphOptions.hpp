@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::graph {
 
 // Settings of one sparse pose graph optimisation (Ceres Levenberg-Marquardt,
@@ -14,6 +16,8 @@ struct PoseGraphOptions {
   double gradient_tolerance = 1e-10;       // stop when the max-norm of the projected gradient < this
   double parameter_tolerance = 1e-8;       // stop when |delta x| / (|x| + tol) < this
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   // True when every field is in range; otherwise false with the reason in
   // *why (when why is not null).
   bool IsValid(std::string* why) const;

@@ -49,4 +49,27 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
   return true;
 }
 
+void DistanceMapOptions::VisitFields(options::FieldVisitor& v) {
+  v.SetElsewhere("resolution_m", "the platform parameter distance_map_resolution_m");
+  v.SetElsewhere("max_range_m", "the platform parameter distance_map_max_range_m");
+  v.Field("clamp_distance_m", &clamp_distance_m, "m");
+  v.Field("recentre_fraction", &recentre_fraction, "");
+  v.SetElsewhere("follow_sensor", "the mapper (each submap's box)");
+  v.Field("growth_margin_m", &growth_margin_m, "m");
+  v.Field("max_edt_cells", &max_edt_cells, "count");
+  v.Field("max_insert_range_m", &max_insert_range_m, "m");
+  v.Field("raycast_free_space", &raycast_free_space, "");
+  v.Field("clear_occupied_only", &clear_occupied_only, "");
+  v.Field("discretize_rays", &discretize_rays, "");
+  v.Field("prob_hit", &prob_hit, "");
+  v.Field("prob_miss", &prob_miss, "");
+  v.Field("occupancy_threshold", &occupancy_threshold, "");
+  v.Field("clamp_min_probability", &clamp_min_probability, "");
+  v.Field("clamp_max_probability", &clamp_max_probability, "");
+  v.SetElsewhere("compute_distances", "the mapper (each submap's own)");
+  v.Field("subvoxel_surfaces", &subvoxel_surfaces, "");
+  v.Field("signed_surfaces", &signed_surfaces, "");
+  v.Field("cell_planes", &cell_planes, "");
+}
+
 }  // namespace unimap::map

@@ -2,6 +2,8 @@
 #include <cstddef>
 #include <string>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::map {
 
 // Parameters of the occupancy octree and of the distance map kept around the
@@ -43,6 +45,8 @@ struct DistanceMapOptions {
                              // cell's nearest surface element (CellPlanes, 4 bytes per cell),
                              // for GpfOptions::point_to_plane
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   // True when every field is in range; otherwise false with the reason
   // (naming the field) in *why when why is not null.
   bool IsValid(std::string* why) const;

@@ -110,4 +110,13 @@ std::vector<Eigen::Vector3f> LineGapFill::Add(double time_s, const Eigen::Vector
   return filled;
 }
 
+void LineGapFillOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("step_m", &step_m, "m");
+  v.Field("max_gap_m", &max_gap_m, "m");
+  v.Field("max_incidence_deg", &max_incidence_deg, "deg");
+  v.Field("max_grazing_incidence_deg", &max_grazing_incidence_deg, "deg");
+  v.Field("max_turn_deg", &max_turn_deg, "deg");
+  v.Field("max_line_interval_s", &max_line_interval_s, "s");
+}
+
 }  // namespace unimap::map

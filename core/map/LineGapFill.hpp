@@ -7,6 +7,7 @@
 
 #include "unimap/BodyScan.hpp"
 #include "unimap/LineScan.hpp"
+#include "options/FieldVisitor.hpp"
 
 namespace unimap::map {
 
@@ -20,6 +21,8 @@ struct LineGapFillOptions {
   double max_turn_deg = 45.0;           // continues: the two gaps' directions differ by at most this
   double max_line_interval_s = 0.1;     // lines further apart in time are not consecutive
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
 };
 

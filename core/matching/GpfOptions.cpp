@@ -30,4 +30,22 @@ bool GpfOptions::IsValid(std::string* why) const {
   return true;
 }
 
+void GpfOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("num_particles", &num_particles, "count");
+  v.Field("point_sigma_m", &point_sigma_m, "m");
+  v.Field("clamp_distance_m", &clamp_distance_m, "m");
+  v.Field("voxel_size_m", &voxel_size_m, "m");
+  v.Field("max_points", &max_points, "count");
+  v.Field("effective_points", &effective_points, "");
+  v.Field("planar", &planar, "");
+  v.Field("min_sigma_position_m", &min_sigma_position_m, "m");
+  v.Field("min_sigma_rotation_rad", &min_sigma_rotation_rad, "rad");
+  v.Field("min_information_ratio", &min_information_ratio, "");
+  v.Field("refine_iterations", &refine_iterations, "count");
+  v.SetElsewhere("point_to_plane", "`unimap run --plane-matching`");
+  v.SetElsewhere("planes_only", "`unimap run --plane-matching`");
+  v.SetElsewhere("threads", "`--threads`");
+  v.SetElsewhere("seed", "`--seed`");
+}
+
 }  // namespace unimap::matching

@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <string>
 
+#include "options/FieldVisitor.hpp"
+
 namespace unimap::matching {
 
 // Gaussian particle filter (Bry et al. 2012) settings.
@@ -28,6 +30,8 @@ struct GpfOptions {
   int threads = 1;                       // particles weighted in parallel (TBB)
   std::uint64_t seed = 1;                // sampling seed (deterministic per scan sequence)
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
 };
 

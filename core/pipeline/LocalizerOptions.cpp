@@ -57,6 +57,34 @@ bool LocalizerOptions::IsValid(std::string* why) const {
   return true;
 }
 
+void LocalizerOptions::VisitFields(options::FieldVisitor& v) {
+  v.Section("eskf", [&] { eskf.VisitFields(v); });
+  v.Section("motion", [&] { motion.VisitFields(v); });
+  v.Section("gpf", [&] { gpf.VisitFields(v); });
+  v.Section("map", [&] { map.VisitFields(v); });
+  v.Section("reacquire", [&] { reacquire.VisitFields(v); });
+  v.Section("line_gap_fill", [&] {
+    // Off is an unset optional; its fields keep their defaults meanwhile.
+    bool enabled = line_gap_fill.has_value();
+    map::LineGapFillOptions fill = line_gap_fill.value_or(map::LineGapFillOptions{});
+    v.Field("enabled", &enabled, "");
+    fill.VisitFields(v);
+    if (enabled) {
+      line_gap_fill = fill;
+    } else {
+      line_gap_fill.reset();
+    }
+  });
+  v.SetElsewhere("scans_per_3d_scan", "the platform parameter scans_per_3d_scan");
+  v.Field("static_init_s", &static_init_s, "s");
+  v.Field("max_initial_accel_bias_m_s2", &max_initial_accel_bias_m_s2, "m/s^2");
+  v.Field("min_points_to_match", &min_points_to_match, "count");
+  v.Field("max_predicted_distance_m", &max_predicted_distance_m, "m");
+  v.Field("sweep_gate_sigmas", &sweep_gate_sigmas, "");
+  v.Field("max_scan_latency_s", &max_scan_latency_s, "s");
+  v.Field("trilinear_distance", &trilinear_distance, "");
+}
+
 LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   LocalizerOptions o;
   o.scans_per_3d_scan = core.scans_per_3d_scan;

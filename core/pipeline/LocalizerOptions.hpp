@@ -49,6 +49,10 @@ struct LocalizerOptions {
                                     // offline runs then do not depend on machine speed; live use sets
                                     // false so localisation never waits (the map catches up in the background)
 
+  // Every field by name, for the platform file's `mapper:` section: the
+  // sections eskf, motion, gpf, map, reacquire and line_gap_fill (its
+  // `enabled` says whether it is set), then this struct's own fields.
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
   // Plane matching (`unimap run --plane-matching`): every scan point is tied
   // to the plane fitted to the map's surface cells around it

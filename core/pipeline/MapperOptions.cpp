@@ -41,6 +41,18 @@ bool MapperOptions::IsValid(std::string* why) const {
   return true;
 }
 
+void MapperOptions::VisitFields(options::FieldVisitor& v) {
+  localizer.VisitFields(v);
+  v.SetElsewhere("submaps.scans_3d_per_submap", "the platform parameter scans_3d_per_submap");
+  v.SetElsewhere("scans_3d_per_optimization", "the platform parameter scans_3d_per_optimization");
+  v.Section("graph", [&] { graph.VisitFields(v); });
+  v.Section("loop_closure", [&] { loop_closure.VisitFields(v); });
+  v.Section("loop_search", [&] { loop_search.VisitFields(v); });
+  v.Field("scan_sigma_position_m", &scan_sigma_position_m, "m");
+  v.Field("scan_sigma_rotation_rad", &scan_sigma_rotation_rad, "rad");
+  v.SetElsewhere("wait_for_background", "the run mode (offline or live)");
+}
+
 MapperOptions MapperOptions::FromPlatform(const CoreParameters& core) {
   MapperOptions o;
   o.localizer = LocalizerOptions::FromPlatform(core);
@@ -49,6 +61,19 @@ MapperOptions MapperOptions::FromPlatform(const CoreParameters& core) {
   o.loop_closure = graph::LoopClosureOptions::ForVoxel(core.distance_map_resolution_m);
   o.scans_3d_per_optimization = core.scans_3d_per_optimization;
   return o;
+}
+
+void LoopSearchOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("enabled", &enabled, "");
+  v.Field("every_3d_scans", &every_3d_scans, "count");
+  v.Field("skip_recent_submaps", &skip_recent_submaps, "count");
+  v.Field("min_radius_m", &min_radius_m, "m");
+  v.Field("radius_per_path_m", &radius_per_path_m, "m/m");
+  v.Field("max_radius_m", &max_radius_m, "m");
+  v.Field("submap_reach_m", &submap_reach_m, "m");
+  v.Field("max_candidates", &max_candidates, "count");
+  v.Field("max_cached_matchers", &max_cached_matchers, "count");
+  v.Field("min_path_m", &min_path_m, "m");
 }
 
 }  // namespace unimap::pipeline

@@ -23,6 +23,8 @@ struct LoopSearchOptions {
   int max_cached_matchers = 6;         // loop-closure matchers kept in memory (least recently used dropped)
   double min_path_m = 5.0;             // a submap is a candidate only after this much travel since it (m)
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
 };
 
@@ -48,6 +50,10 @@ struct MapperOptions {
   bool wait_for_background = true;      // offline: wait for each optimisation and loop search so
                                         // results do not depend on machine speed; live: false
 
+  // Every field by name, for the platform file's `mapper:` section: the
+  // localiser's fields at the top level (LocalizerOptions::VisitFields),
+  // then graph, loop_closure, loop_search and this struct's own.
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
   // Shared defaults with the platform's parameters.
   static MapperOptions FromPlatform(const CoreParameters& core);

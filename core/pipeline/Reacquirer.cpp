@@ -170,4 +170,17 @@ ReacquireResult Reacquirer::Search(const std::shared_ptr<const map::DistanceFiel
   return result;
 }
 
+void ReacquireOptions::VisitFields(options::FieldVisitor& v) {
+  v.Field("coarse_factor", &coarse_factor, "count");
+  v.Field("coarse_clamp_m", &coarse_clamp_m, "m");
+  v.Field("coarse_iterations", &coarse_iterations, "count");
+  v.Field("fine_iterations", &fine_iterations, "count");
+  v.Field("inlier_distance_voxels", &inlier_distance_voxels, "voxels");
+  v.Field("min_inlier_gain", &min_inlier_gain, "");
+  v.Field("max_points", &max_points, "count");
+  v.Field("wide_sigma_voxels", &wide_sigma_voxels, "voxels");
+  v.Field("wide_sigma_rad", &wide_sigma_rad, "rad");
+  v.Field("max_yaw_rad", &max_yaw_rad, "rad");
+}
+
 }  // namespace unimap::pipeline

@@ -8,6 +8,7 @@
 
 #include "map/DistanceField.hpp"
 #include "matching/PseudoMeasurement.hpp"
+#include "options/FieldVisitor.hpp"
 
 namespace unimap::pipeline {
 
@@ -30,6 +31,8 @@ struct ReacquireOptions {
   double wide_sigma_rad = 0.05;         // (about 3 deg)
   double max_yaw_rad = 0.2;             // the grid search's heading reach, each side (rad)
 
+  // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
+  void VisitFields(options::FieldVisitor& v);
   bool IsValid(std::string* why) const;
 };
 

@@ -33,8 +33,8 @@
 #include "io/TumTrajectory.hpp"
 #include "pipeline/DatasetRunner.hpp"
 #include "pipeline/Mapper.hpp"
+#include "pipeline/MapperSettings.hpp"
 #include "pipeline/StageTimes.hpp"
-#include "unimap/CoreParameters.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -128,8 +128,7 @@ std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const
   const sim::SimulationSummary s = sim::Simulator(sim::LoadScenario(file), run).Run();
   const Platform platform = sim::Simulator::LoadPayload(s.payload_source);
   pipeline::ResetPeakRss();  // the peak of this run, not of the cases before it
-  pipeline::Mapper mapper(pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters)),
-                         platform.plugin.plugin);
+  pipeline::Mapper mapper(pipeline::MapperOptionsFor(platform), platform.plugin.plugin);
   io::DatasetReader reader(run.out_dir);
   const fs::path odometry_file = run.out_dir / "odometry.tum";
   pipeline::RunSummary summary;

@@ -1,9 +1,11 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "Commands.hpp"
 #include "TextTable.hpp"
+#include "pipeline/MapperSettings.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -17,6 +19,8 @@ struct ConfigOptions {
 int RunConfig(const ConfigOptions& options) {
   try {
     const Platform platform = LoadPlatform(options.platform_file);
+    // Checked before anything is printed: a bad mapper setting is an error, not half a listing.
+    const std::vector<pipeline::MapperSettingRow> mapper_rows = pipeline::ListMapperSettings(platform);
     std::cout << "platform: " << platform.file << '\n'
               << "plugin:   " << platform.plugin.plugin->Name() << "  (ABI " << platform.plugin.abi_version
               << ")  " << platform.plugin.library_path.string() << '\n'
@@ -29,6 +33,14 @@ int RunConfig(const ConfigOptions& options) {
       table.AddRow({p.spec.key, p.spec.symbol, ToString(p.value), source, p.spec.description});
     }
     table.Print(std::cout);
+    // The mapper's settings: every key a `mapper:` section may set.
+    std::cout << "\nmapper settings (a `mapper:` section sets them; " << "sources: file:line, derived = follows a "
+              << "value the file sets, platform = the mapper's value for this platform's parameters, default)\n";
+    TextTable settings({"key", "value", "unit", "source"});
+    for (const pipeline::MapperSettingRow& row : mapper_rows) {
+      settings.AddRow({row.key, row.value, row.unit, row.source});
+    }
+    settings.Print(std::cout);
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -1,6 +1,7 @@
 // `unimap localize`: track the pose of a dataset in a fixed prior map (an
 // OctoMap .bt or a .pcd point cloud), write the trajectory, run.json and,
 // with ground truth, the evaluation (estimate and truth share the map frame).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,7 +25,7 @@
 #include "map/WholeMapOptions.hpp"
 #include "pipeline/DatasetRunner.hpp"
 #include "pipeline/Localizer.hpp"
-#include "unimap/CoreParameters.hpp"
+#include "pipeline/MapperSettings.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -148,8 +149,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     if (!options.initial_pose.empty()) ParsePose(options.initial_pose);
     PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
-    pipeline::LocalizerOptions localizer_options =
-        pipeline::LocalizerOptions::ForPriorMap(CoreParameters::FromMap(platform.parameters));
+    pipeline::LocalizerOptions localizer_options = pipeline::PriorMapOptionsFor(platform);
     localizer_options.gpf.threads = options.threads;
     localizer_options.gpf.point_to_plane = options.point_to_plane;
     localizer_options.map.cell_planes = options.point_to_plane;  // the planes it ties points to
@@ -158,7 +158,9 @@ int RunLocalize(const LocalizeCliOptions& options) {
       if (bt_map) throw InputError("--map-resolution-m: applies to .pcd maps; a .bt map keeps its own resolution");
       localizer_options.map.resolution_m = options.map_resolution_m;
     }
-    if (!bt_map) {
+    const bool clamp_set = std::any_of(platform.mapper_settings.begin(), platform.mapper_settings.end(),
+                                       [](const ParameterOverride& s) { return s.key == "map.clamp_distance_m"; });
+    if (!bt_map && !clamp_set) {
       // The particle filter clamps distances at its own clamp, so a field
       // clamped there too changes only lookups whose trilinear stencil
       // reaches past it, and lets a whole tunnel fit one box (WholeMapOptions).

@@ -15,7 +15,7 @@
 #include "io/TumTrajectory.hpp"
 #include "estimation/MotionPriorOptions.hpp"
 #include "pipeline/Mapper.hpp"
-#include "unimap/CoreParameters.hpp"
+#include "pipeline/MapperSettings.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -30,11 +30,10 @@ int RunMappingToFolder(const MappingRunOptions& options) {
   try {
     PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
-    pipeline::MapperOptions mapper_options =
-        pipeline::MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+    pipeline::MapperOptions mapper_options = pipeline::MapperOptionsFor(platform);
     mapper_options.localizer.gpf.threads = options.threads;
     mapper_options.localizer.gpf.seed = options.seed;
-    mapper_options.loop_search.enabled = !options.no_loop_closure;
+    if (options.no_loop_closure) mapper_options.loop_search.enabled = false;
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
     if (options.measure_all_line_points) mapper_options.localizer.max_predicted_distance_m = 0.0;

@@ -16,6 +16,13 @@ JsonObject PlatformParametersJson(const std::string& platform_file) {
     o.Add("meaning", p.spec.description);
     parameters.Add(p.spec.key, o);
   }
+  // The mapper settings the file changes (`unimap config` lists the rest).
+  for (const ParameterOverride& setting : platform.mapper_settings) {
+    JsonObject o;
+    o.Add("value", ToString(setting.value));
+    o.Add("source", platform.file + ":" + std::to_string(setting.line));
+    parameters.Add("mapper." + setting.key, o);
+  }
   return parameters;
 }
 

@@ -21,6 +21,15 @@ struct EffectiveParameter {
   int line = 0;  // line in the platform file when source is kPlatformFile
 };
 
+// One setting of a platform file, flattened to its dotted key below its
+// section ("extrinsic.body_motor.rpy_deg" under `parameters:`,
+// "gpf.num_particles" under `mapper:`).
+struct ParameterOverride {
+  std::string key;       // dotted key
+  ParameterValue value;  // as written: integer, number, bool, string or list of numbers
+  int line = 0;          // 1-based line of the key in the file
+};
+
 // A platform: the payload plugin a YAML file names, configured with the
 // plugin's defaults overridden by the file.
 struct Platform {
@@ -29,6 +38,8 @@ struct Platform {
   LoadedPlugin plugin;                     // configured with `parameters`
   ParameterMap parameters;                 // effective values
   std::vector<EffectiveParameter> effective;  // in the plugin's spec order
+  std::vector<ParameterOverride> mapper_settings;  // the file's `mapper:` section in file order,
+                                                   // checked and applied by the mapper's options
 };
 
 // Reads a platform file, loads its plugin, applies and validates the

@@ -45,6 +45,18 @@ case $case_name in
     f=$(printf 'plugin: rotating_2d\nparameters:\n  distance_map_resolution_m: -0.1\n' | platform)
     code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"
     expect "$f:3: key 'distance_map_resolution_m': .*out of range" ;;
+  config_mapper_settings)
+    # Every mapper knob is listed with its source; the file's own at its line.
+    f=$(printf 'plugin: rotating_2d\nmapper:\n  gpf:\n    num_particles: 250\n' | platform)
+    code=$(run config --platform "$f"); [ "$code" = 0 ] || fail "exit $code"
+    expect "mapper.gpf.num_particles +250 +count +$f:4"
+    expect "mapper.loop_closure.min_score +0.6 +default"
+    f=$(printf 'plugin: rotating_2d\nmapper:\n  loop_search:\n    max_radius: 3\n' | platform)
+    code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"
+    expect "$f:4: key 'mapper.loop_search.max_radius': unknown key \\(did you mean mapper.loop_search.max_radius_m\\?\\)"
+    f=$(printf 'plugin: rotating_2d\nmapper:\n  reacquire:\n    coarse_factor: 0\n' | platform)
+    code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"
+    expect "$f:4: key 'mapper.reacquire.coarse_factor': " ;;
   config_missing_plugin)
     f=$(printf 'plugin: no_such_payload\n' | platform)
     code=$(run config --platform "$f"); [ "$code" = 2 ] || fail "exit $code, expected 2"

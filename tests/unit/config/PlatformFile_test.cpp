@@ -130,6 +130,23 @@ TEST(PlatformFileTest, TopLevelErrors) {
   ExpectParseError("plugin: x\nparameters: 3\n", 2, "parameters", "got '3'");
 }
 
+TEST(PlatformFileTest, MapperSectionIsKeptApartWithLines) {
+  const PlatformFile file = PlatformFile::Parse(
+      "plugin: x\nparameters:\n  a: 1\nmapper:\n  gpf:\n    num_particles: 200\n  scan_sigma_position_m: 0.2\n",
+      "inline.yaml");
+  ASSERT_EQ(file.overrides().size(), 1u);
+  ASSERT_EQ(file.mapper_settings().size(), 2u);
+  EXPECT_EQ(file.mapper_settings()[0].key, "gpf.num_particles");
+  EXPECT_EQ(std::get<std::int64_t>(file.mapper_settings()[0].value), 200);
+  EXPECT_EQ(file.mapper_settings()[0].line, 6);
+  EXPECT_EQ(file.mapper_settings()[1].key, "scan_sigma_position_m");
+  EXPECT_EQ(file.mapper_settings()[1].line, 7);
+  EXPECT_TRUE(PlatformFile::Parse("plugin: x\nmapper:\n", "inline.yaml").mapper_settings().empty());
+  ExpectParseError("plugin: x\nmapper: 3\n", 2, "mapper", "expected a map of mapper settings");
+  ExpectParseError("plugin: x\nmapper:\n  gpf:\n    a: 1\n    a: 2\n", 5, "mapper.gpf.a", "set twice");
+  ExpectParseError("plugin: x\nmapper:\n  gpf:\n    a:\n", 4, "mapper.gpf.a", "no value given");
+}
+
 TEST(PlatformFileTest, ParameterValueErrors) {
   ExpectParseError("plugin: x\nparameters:\n  a:\n  b: 1\n", 3, "a", "no value given");
   ExpectParseError("plugin: x\nparameters:\n  g:\n    a: ~\n", 4, "g.a", "no value given");
