@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "eval/TrajectoryMetrics.hpp"
 
 namespace unimap::eval {
@@ -17,7 +19,7 @@ struct MetricRow {
 // A metric beyond the trajectory's (e.g. the map error): its metrics.json
 // value and its displayed row.
 struct ExtraMetric {
-  std::string json;  // full-precision JSON value (a number, or null)
+  nlohmann::ordered_json value;  // its metrics.json value (a number, or null)
   MetricRow row;     // key, display value, meaning
 };
 

@@ -8,16 +8,13 @@
 
 namespace unimap::eval {
 
-// The JSON text (keys = TrajectoryMetrics field names, vectors as [x, y, z]
-// arrays, numbers in shortest round-trip form, empty optionals as null),
-// then the extra metrics' keys in order.
+// The JSON text (nlohmann-json; keys = TrajectoryMetrics field names,
+// vectors as [x, y, z] arrays, numbers in shortest round-trip form,
+// non-finite numbers and empty optionals as null), then the extra metrics'
+// keys in order.
 std::string MetricsToJson(const TrajectoryMetrics& metrics, const std::vector<ExtraMetric>& extra = {});
 
 // Every key MetricsToJson writes, in output order.
 std::vector<std::string> MetricsJsonKeys();
-
-// A number as JSON: shortest decimal that reads back to the same double;
-// "null" for NaN and infinities.
-std::string JsonNumber(double value);
 
 }  // namespace unimap::eval

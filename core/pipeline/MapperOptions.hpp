@@ -37,16 +37,10 @@ struct MapperOptions {
   graph::PoseGraphOptions graph;        // solver settings
   graph::LoopClosureOptions loop_closure;  // matcher settings
   LoopSearchOptions loop_search;        // candidate selection
-  double scan_sigma_position_m = 0.1;   // scan-in-submap and odometry constraints: position sigma (m);
-                                        // the localiser's along-corridor error over a submap is of this
-                                        // order (corridor ATE after loop closure: 0.02 m / 0.002 rad
-                                        // 0.132 m, 0.05 / 0.005 0.101 m, 0.1 / 0.01 0.084 m)
-  double scan_sigma_rotation_rad = 0.001;  // ... and rotation sigma (rad): the localiser's rotation drifts
-                                        // far less than its position (tunnel odometry: mean rotation error
-                                        // 0.03 / 0.04 / 0.05 deg); with 0.01 loop closures tilted and turned
-                                        // the trajectory (tunnel 0.10 / 0.07 / 0.14 deg after optimisation,
-                                        // 0.001: 0.05 / 0.04 / 0.06; corridor 0.21 / 0.23 / 0.17 -> 0.11 /
-                                        // 0.13 / 0.03 deg, ATE 0.084 -> 0.072 m)
+  double scan_sigma_position_m = 0.1;   // scan-in-submap and odometry constraints: position sigma (m), the
+                                        // order of the localiser's along-track error over a submap
+  double scan_sigma_rotation_rad = 0.001;  // ... and rotation sigma (rad): the localiser's rotation drifts far
+                                        // less than its position (measured: docs/mapping.md, "Pose graph")
   bool wait_for_background = true;      // offline: wait for each optimisation and loop search so
                                         // results do not depend on machine speed; live: false
 

@@ -20,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "Commands.hpp"
 #include "MapEvaluation.hpp"
 #include "MapOutputs.hpp"
@@ -195,11 +197,20 @@ std::string Capture(const std::string& command, int* status) {
   return out;
 }
 
-// The number after `"key": ` in a JSON text (the first occurrence), or NaN.
+// The number under key in a JSON text (depth first, the first in file
+// order), or NaN when there is none or the text is not JSON.
+double FindNumber(const nlohmann::ordered_json& json, const std::string& key) {
+  if (!json.is_object()) return std::nan("");
+  for (const auto& [name, value] : json.items()) {
+    if (name == key && value.is_number()) return value.get<double>();
+    const double inner = FindNumber(value, key);
+    if (!std::isnan(inner)) return inner;
+  }
+  return std::nan("");
+}
+
 double JsonNumber(const std::string& text, const std::string& key) {
-  const std::size_t at = text.find("\"" + key + "\":");
-  if (at == std::string::npos) return std::nan("");
-  return std::strtod(text.c_str() + at + key.size() + 3, nullptr);
+  return FindNumber(nlohmann::ordered_json::parse(text, nullptr, false), key);
 }
 
 std::string ReadText(const std::filesystem::path& file) {

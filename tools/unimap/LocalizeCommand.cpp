@@ -207,19 +207,19 @@ int RunLocalize(const LocalizeCliOptions& options) {
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, localizer.stats(), reader.has_groundtruth());
     outputs.world_frame_errors = true;
-    JsonObject extra;
-    extra.Add("map", options.map_file);
-    extra.Add("map_points", map_points);
-    extra.Add("map_resolution_m", map_resolution_m);
-    extra.Add("map_whole_box", whole_map);
-    extra.Add("initial_pose_source", initial.source);
-    extra.Add("initial_pose", PoseText(initial.T_map_body));
+    Json extra = Json::object();
+    extra["map"] = options.map_file;
+    extra["map_points"] = map_points;
+    extra["map_resolution_m"] = map_resolution_m;
+    extra["map_whole_box"] = whole_map;
+    extra["initial_pose_source"] = initial.source;
+    extra["initial_pose"] = PoseText(initial.T_map_body);
     // The attitude source used (a requested "pose" falls back to "gravity"
     // when the pose's tilt disagrees with gravity; see the messages).
     const std::optional<estimation::InitialAttitude> used = localizer.stats().initial_attitude;
-    extra.Add("initial_attitude",
-              std::string(used && *used == estimation::InitialAttitude::kPose ? "pose" : "gravity"));
-    if (initial.given) extra.Add("initial_attitude_requested", attitude);
+    extra["initial_attitude"] = 
+              std::string(used && *used == estimation::InitialAttitude::kPose ? "pose" : "gravity");
+    if (initial.given) extra["initial_attitude_requested"] = attitude;
     outputs.extras.emplace_back("localize", extra);
     return WriteRunOutputs(outputs);
   } catch (const Error& e) {

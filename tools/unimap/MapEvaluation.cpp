@@ -25,7 +25,7 @@ std::string Lowercase(std::string text) {
 std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
   const eval::MapErrorStats& u = e.unaligned;
   const auto value = [](const std::optional<eval::MapErrorStats>& stats, double eval::MapErrorStats::*field) {
-    return stats ? eval::JsonNumber((*stats).*field) : std::string("null");
+    return stats ? nlohmann::ordered_json((*stats).*field) : nlohmann::ordered_json(nullptr);
   };
   const auto shown = [](const std::optional<eval::MapErrorStats>& stats, double eval::MapErrorStats::*field) {
     return stats ? Fixed((*stats).*field, 4) : std::string("n/a");
@@ -36,11 +36,11 @@ std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
   const auto anchored_shown = [&](double eval::MapErrorStats::*field) { return shown(e.anchored, field); };
   using S = eval::MapErrorStats;
   return {
-      {eval::JsonNumber(u.mean_m),
+      {u.mean_m,
        {"map_error_mean_m", Fixed(u.mean_m, 4), "mean distance of the map points to the true surfaces (no alignment), m"}},
-      {eval::JsonNumber(u.p95_m), {"map_error_p95_m", Fixed(u.p95_m, 4), "95th percentile (nearest rank) of that distance, m"}},
-      {eval::JsonNumber(u.max_m), {"map_error_max_m", Fixed(u.max_m, 4), "largest distance of a map point, m"}},
-      {std::to_string(u.points), {"map_points", std::to_string(u.points), "map points evaluated"}},
+      {u.p95_m, {"map_error_p95_m", Fixed(u.p95_m, 4), "95th percentile (nearest rank) of that distance, m"}},
+      {u.max_m, {"map_error_max_m", Fixed(u.max_m, 4), "largest distance of a map point, m"}},
+      {u.points, {"map_points", std::to_string(u.points), "map points evaluated"}},
       {aligned(&S::mean_m),
        {"map_error_aligned_mean_m", aligned_shown(&S::mean_m), "mean distance after moving the map by the ATE alignment, m"}},
       {aligned(&S::p95_m), {"map_error_aligned_p95_m", aligned_shown(&S::p95_m), "95th percentile after the ATE alignment, m"}},

@@ -51,16 +51,16 @@ void WriteLoopClosures(const std::filesystem::path& file, const std::vector<pipe
   eval::WriteFileAtomically(file, text);
 }
 
-JsonObject ErrorsJson(const PositionErrorAt& e) {
-  JsonObject o;
-  o.Add("height_error_m", e.height_error_m);
-  o.Add("position_error_m", e.position_error_m);
+Json ErrorsJson(const PositionErrorAt& e) {
+  Json o = Json::object();
+  o["height_error_m"] = e.height_error_m;
+  o["position_error_m"] = e.position_error_m;
   return o;
 }
 
 }  // namespace
 
-JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
+Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
                            const MapOutputOptions& options) {
   const std::vector<StampedPose> trajectory = mapper.OptimizedTrajectory();
   io::WriteTumTrajectory(out_dir / "trajectory.tum", trajectory);
@@ -75,23 +75,23 @@ JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline:
   WriteLoopClosures(out_dir / "loop_closures.csv", mapper.LoopClosureLinks());
 
   const pipeline::MapperStats s = mapper.stats();
-  JsonObject o;
-  o.Add("key_scans", s.key_scans);
-  o.Add("submaps", static_cast<std::size_t>(s.submaps));
-  o.Add("retired_submaps", s.retired_submaps);
-  o.Add("loop_closures", s.loop_closures);
-  o.Add("optimisations", s.optimisations);
-  o.Add("optimisation_failures", s.optimisation_failures);
-  o.Add("optimisation_s", s.optimisation_s);
-  o.Add("key_scan_points", s.key_scan_points);
-  o.Add("map_points_kept", s.map_points_kept);
-  o.Add("loop_searches", s.loop_search.searches);
-  o.Add("loop_candidates", s.loop_search.candidates);
-  o.Add("loop_rejected", s.loop_search.rejected);
-  o.Add("loop_matchers_built", s.loop_search.matchers_built);
-  o.Add("map_points", points.size());
-  o.Add("map_voxel_m", options.map_voxel_m);
-  o.Add("messages", s.messages);
+  Json o = Json::object();
+  o["key_scans"] = s.key_scans;
+  o["submaps"] = static_cast<std::size_t>(s.submaps);
+  o["retired_submaps"] = s.retired_submaps;
+  o["loop_closures"] = s.loop_closures;
+  o["optimisations"] = s.optimisations;
+  o["optimisation_failures"] = s.optimisation_failures;
+  o["optimisation_s"] = s.optimisation_s;
+  o["key_scan_points"] = s.key_scan_points;
+  o["map_points_kept"] = s.map_points_kept;
+  o["loop_searches"] = s.loop_search.searches;
+  o["loop_candidates"] = s.loop_search.candidates;
+  o["loop_rejected"] = s.loop_search.rejected;
+  o["loop_matchers_built"] = s.loop_search.matchers_built;
+  o["map_points"] = points.size();
+  o["map_voxel_m"] = options.map_voxel_m;
+  o["messages"] = s.messages;
   return o;
 }
 
@@ -113,11 +113,11 @@ std::optional<LoopPointErrors> ComputeLoopPointErrors(const std::vector<StampedP
                          ErrorsAt(T_truth_estimate, *after, *true_pose)};
 }
 
-JsonObject LoopPointJson(const LoopPointErrors& errors) {
-  JsonObject o;
-  o.Add("time_s", errors.time_s);
-  o.Add("odometry", ErrorsJson(errors.odometry));
-  o.Add("optimized", ErrorsJson(errors.optimized));
+Json LoopPointJson(const LoopPointErrors& errors) {
+  Json o = Json::object();
+  o["time_s"] = errors.time_s;
+  o["odometry"] = ErrorsJson(errors.odometry);
+  o["optimized"] = ErrorsJson(errors.optimized);
   return o;
 }
 

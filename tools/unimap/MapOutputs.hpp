@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "JsonObject.hpp"
+#include "Json.hpp"
 #include "pipeline/Mapper.hpp"
 #include "unimap/StampedPose.hpp"
 
@@ -22,7 +22,7 @@ struct MapOutputOptions {
 // closure: time, the 3D scan's position, the matched submap's origin), each atomically; returns the
 // mapper's counts and the file names as run.json's "mapping" object.
 // Throws unimap::Error when a file cannot be written.
-JsonObject WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
+Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
                            const MapOutputOptions& options);
 
 // Position error of one pose against the truth at the same time.
@@ -49,6 +49,6 @@ std::optional<LoopPointErrors> ComputeLoopPointErrors(const std::vector<StampedP
 
 // run.json's "loop_point": {"time_s", "odometry": {...}, "optimized": {...}},
 // each with "height_error_m" and "position_error_m".
-JsonObject LoopPointJson(const LoopPointErrors& errors);
+Json LoopPointJson(const LoopPointErrors& errors);
 
 }  // namespace unimap::cli

@@ -52,7 +52,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     MapOutputOptions map_options;
     map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
     pipeline::StageTimes stages = mapper.Times();
-    JsonObject mapping;
+    Json mapping = Json::object();
     {
       pipeline::StageTimer timer(&stages.outputs_s);
       mapping = WriteMapOutputs(out, mapper, map_options);
@@ -80,13 +80,13 @@ int RunMappingToFolder(const MappingRunOptions& options) {
         claims.push_back({link.submap_start_time_s, link.time_s, link.T_start_body});
       }
       const eval::LoopClosureCheck check = eval::CheckLoopClosures(claims, io::ReadTumTrajectory(truth));
-      JsonObject o;
-      o.Add("checked", check.checked);
-      o.Add("false_closures", check.false_closures);
-      o.Add("max_translation_error_m", check.max_translation_error_m);
-      o.Add("max_rotation_error_deg", check.max_rotation_error_deg);
-      o.Add("false_translation_m", check.false_translation_m);
-      o.Add("false_rotation_deg", check.false_rotation_deg);
+      Json o = Json::object();
+      o["checked"] = check.checked;
+      o["false_closures"] = check.false_closures;
+      o["max_translation_error_m"] = check.max_translation_error_m;
+      o["max_rotation_error_deg"] = check.max_rotation_error_deg;
+      o["false_translation_m"] = check.false_translation_m;
+      o["false_rotation_deg"] = check.false_rotation_deg;
       outputs.extras.emplace_back("loop_closure_check", o);
       if (check.false_closures > 0) {
         std::cout << "  note: " << check.false_closures << " of " << check.checked

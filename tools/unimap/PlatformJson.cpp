@@ -4,24 +4,24 @@
 
 namespace unimap::cli {
 
-JsonObject PlatformParametersJson(const std::string& platform_file) {
+Json PlatformParametersJson(const std::string& platform_file) {
   const Platform platform = LoadPlatform(platform_file);
-  JsonObject parameters;
+  Json parameters = Json::object();
   for (const EffectiveParameter& p : platform.effective) {
-    JsonObject o;
-    o.Add("value", ToString(p.value));
-    o.Add("symbol", p.spec.symbol);
-    o.Add("source", p.source == ParameterSource::kPlatformFile ? platform.file + ":" + std::to_string(p.line)
-                                                               : std::string("plugin default"));
-    o.Add("meaning", p.spec.description);
-    parameters.Add(p.spec.key, o);
+    Json o = Json::object();
+    o["value"] = ToString(p.value);
+    o["symbol"] = p.spec.symbol;
+    o["source"] = p.source == ParameterSource::kPlatformFile ? platform.file + ":" + std::to_string(p.line)
+                                                               : std::string("plugin default");
+    o["meaning"] = p.spec.description;
+    parameters[p.spec.key] = o;
   }
   // The mapper settings the file changes (`unimap config` lists the rest).
   for (const ParameterOverride& setting : platform.mapper_settings) {
-    JsonObject o;
-    o.Add("value", ToString(setting.value));
-    o.Add("source", platform.file + ":" + std::to_string(setting.line));
-    parameters.Add("mapper." + setting.key, o);
+    Json o = Json::object();
+    o["value"] = ToString(setting.value);
+    o["source"] = platform.file + ":" + std::to_string(setting.line);
+    parameters["mapper." + setting.key] = o;
   }
   return parameters;
 }

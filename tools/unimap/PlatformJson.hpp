@@ -3,13 +3,13 @@
 // what every parameter was and where it came from.
 #include <string>
 
-#include "JsonObject.hpp"
+#include "Json.hpp"
 
 namespace unimap::cli {
 
 // {"<key>": {"value", "symbol", "source" ("plugin default" or "FILE:LINE"),
 // "meaning"}, ...} in the plugin's order, from LoadPlatform(platform_file).
 // Throws ConfigError as LoadPlatform does.
-JsonObject PlatformParametersJson(const std::string& platform_file);
+Json PlatformParametersJson(const std::string& platform_file);
 
 }  // namespace unimap::cli

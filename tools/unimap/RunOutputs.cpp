@@ -78,44 +78,44 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
   return e;
 }
 
-JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& s) {
-  JsonObject o;
-  o.Add("imu_samples", s.imu_samples);
-  o.Add("imu_out_of_order", s.imu_out_of_order);
-  o.Add("imu_gaps", s.imu_gaps);
-  o.Add("encoder_rejected", s.encoder_rejected);
-  o.Add("scans_matched", s.scans_matched);
-  o.Add("scans_unmatched", s.scans_unmatched);
-  o.Add("scans_searched", s.scans_searched);
-  o.Add("scans_reacquired", s.scans_reacquired);
-  o.Add("scans_bad_input", s.scans_bad_input);
-  o.Add("scans_no_encoder", s.scans_no_encoder);
-  o.Add("scans_out_of_order", s.scans_out_of_order);
-  o.Add("scans_no_motion", s.scans_no_motion);
-  o.Add("odometry_samples", s.odometry_samples);
-  o.Add("beams_dropped", s.beams_dropped);
-  o.Add("map_insertions", s.map_insertions);
-  o.Add("map_errors", s.map_errors);
-  o.Add("messages", s.messages);
+Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
+  Json o = Json::object();
+  o["imu_samples"] = s.imu_samples;
+  o["imu_out_of_order"] = s.imu_out_of_order;
+  o["imu_gaps"] = s.imu_gaps;
+  o["encoder_rejected"] = s.encoder_rejected;
+  o["scans_matched"] = s.scans_matched;
+  o["scans_unmatched"] = s.scans_unmatched;
+  o["scans_searched"] = s.scans_searched;
+  o["scans_reacquired"] = s.scans_reacquired;
+  o["scans_bad_input"] = s.scans_bad_input;
+  o["scans_no_encoder"] = s.scans_no_encoder;
+  o["scans_out_of_order"] = s.scans_out_of_order;
+  o["scans_no_motion"] = s.scans_no_motion;
+  o["odometry_samples"] = s.odometry_samples;
+  o["beams_dropped"] = s.beams_dropped;
+  o["map_insertions"] = s.map_insertions;
+  o["map_errors"] = s.map_errors;
+  o["messages"] = s.messages;
   return o;
 }
 
-JsonObject StageTimesJson(const pipeline::StageTimes& t, double processing_s, bool print) {
+Json StageTimesJson(const pipeline::StageTimes& t, double processing_s, bool print) {
   const std::pair<const char*, double> stages[] = {
       {"deskew_s", t.deskew_s},           {"downsample_s", t.downsample_s},
       {"match_s", t.match_s},             {"eskf_s", t.eskf_s},
       {"map_surface_s", t.map_surface_s}, {"map_distance_s", t.map_distance_s},
       {"map_export_s", t.map_export_s},   {"loop_search_s", t.loop_search_s},
       {"optimisation_s", t.optimisation_s}, {"outputs_s", t.outputs_s}};
-  JsonObject o;
+  Json o = Json::object();
   std::string line = "stages (s):";
   for (const auto& [key, seconds] : stages) {
-    o.Add(key, seconds);
+    o[key] = seconds;
     char buffer[64];
     std::snprintf(buffer, sizeof(buffer), " %.*s %.2f", static_cast<int>(std::strlen(key) - 2), key, seconds);
     line += buffer;
   }
-  o.Add("processing_s", processing_s);
+  o["processing_s"] = processing_s;
   if (print) std::cout << line << '\n';
   return o;
 }
@@ -138,28 +138,28 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   const bool evaluate = in.has_groundtruth && summary.poses_written >= 2;
   const std::filesystem::path trajectory = out / in.trajectory_file;
 
-  JsonObject run;
-  run.Add("realtime_factor", summary.realtime_factor);
-  run.Add("processing_s", summary.processing_s);
-  run.Add("data_duration_s", summary.data_duration_s);
-  run.Add("scans", in.stats.scans);
-  run.Add("poses", summary.poses_written);
-  run.Add("peak_rss_mb", summary.peak_rss_mb);
-  run.Add("interrupted", summary.interrupted || SignalGuard::Received() != 0);
-  run.Add("error", summary.error);
-  run.Add("platform", in.platform_file);
-  run.Add("payload", in.payload);
-  run.Add("dataset", in.data_dir);
-  run.Add("gpf_threads", in.gpf_threads);
-  run.Add("gpf_seed", static_cast<std::size_t>(in.gpf_seed));
+  Json run = Json::object();
+  run["realtime_factor"] = summary.realtime_factor;
+  run["processing_s"] = summary.processing_s;
+  run["data_duration_s"] = summary.data_duration_s;
+  run["scans"] = in.stats.scans;
+  run["poses"] = summary.poses_written;
+  run["peak_rss_mb"] = summary.peak_rss_mb;
+  run["interrupted"] = summary.interrupted || SignalGuard::Received() != 0;
+  run["error"] = summary.error;
+  run["platform"] = in.platform_file;
+  run["payload"] = in.payload;
+  run["dataset"] = in.data_dir;
+  run["gpf_threads"] = in.gpf_threads;
+  run["gpf_seed"] = static_cast<std::size_t>(in.gpf_seed);
   if (!in.motion.empty()) {
-    run.Add("motion", in.motion);
-    run.Add("motion_reason", in.motion_reason);
+    run["motion"] = in.motion;
+    run["motion_reason"] = in.motion_reason;
   }
-  run.Add("localizer", LocalizerStatsJson(in.stats));
-  run.Add("command", CommandLine());                                // the report's source of options
-  run.Add("parameters", PlatformParametersJson(in.platform_file));  // effective values and their sources
-  for (const auto& [key, object] : in.extras) run.Add(key, object);
+  run["localizer"] = LocalizerStatsJson(in.stats);
+  run["command"] = CommandLine();                                // the report's source of options
+  run["parameters"] = PlatformParametersJson(in.platform_file);  // effective values and their sources
+  for (const auto& [key, object] : in.extras) run[key] = object;
   // The truth and the estimate, read once for every evaluation below.
   std::vector<StampedPose> truth;
   std::vector<StampedPose> estimate;
@@ -171,11 +171,11 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     // The trajectory before pose-graph optimisation, for comparison.
     const eval::TrajectoryEvaluation odometry =
         eval::EvaluateTrajectory(io::ReadTumTrajectory(out / in.odometry_file), truth, {});
-    JsonObject o;
-    o.Add("file", in.odometry_file);
-    o.Add("ate_rmse_m", odometry.metrics.ate_rmse_m);
-    if (odometry.metrics.drift_percent) o.Add("drift_percent", *odometry.metrics.drift_percent);
-    run.Add("odometry", o);
+    Json o = Json::object();
+    o["file"] = in.odometry_file;
+    o["ate_rmse_m"] = odometry.metrics.ate_rmse_m;
+    if (odometry.metrics.drift_percent) o["drift_percent"] = *odometry.metrics.drift_percent;
+    run["odometry"] = o;
   }
   WorldFrameErrors world_errors;
   if (in.world_frame_errors && evaluate) {
@@ -183,13 +183,13 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   }
   if (in.world_frame_errors) {
     const bool defined = world_errors.poses > 0;
-    run.Add("position_rmse_m", OrNull(world_errors.position_rmse_m, defined));
-    run.Add("rotation_rmse_deg", OrNull(world_errors.rotation_rmse_deg, defined));
-    run.Add("position_max_error_m", OrNull(world_errors.position_max_error_m, defined));
-    run.Add("rotation_max_error_deg", OrNull(world_errors.rotation_max_error_deg, defined));
-    run.Add("error_poses", world_errors.poses);
+    run["position_rmse_m"] = OrNull(world_errors.position_rmse_m, defined);
+    run["rotation_rmse_deg"] = OrNull(world_errors.rotation_rmse_deg, defined);
+    run["position_max_error_m"] = OrNull(world_errors.position_max_error_m, defined);
+    run["rotation_max_error_deg"] = OrNull(world_errors.rotation_max_error_deg, defined);
+    run["error_poses"] = world_errors.poses;
   }
-  eval::WriteFileAtomically(out / "run.json", run.ToString() + "\n");
+  eval::WriteFileAtomically(out / "run.json", JsonText(run) + "\n");
 
   std::cout << "scans " << in.stats.scans << " (matched " << in.stats.scans_matched << "), data "
             << summary.data_duration_s << " s in " << summary.processing_s << " s: " << summary.realtime_factor

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "JsonObject.hpp"
+#include "Json.hpp"
 #include "pipeline/DatasetRunner.hpp"
 #include "pipeline/Localizer.hpp"
 
@@ -35,7 +35,7 @@ struct RunOutputsInput {
   std::string trajectory_file = "trajectory.tum";  // in out_dir: the trajectory evaluated (metrics.json)
   std::string map_file;                // when not empty (in out_dir) and the dataset has world.yaml: map error
   std::string odometry_file;           // when not empty (in out_dir): also evaluated, summary in run.json "odometry"
-  std::vector<std::pair<std::string, JsonObject>> extras;  // command-specific objects for run.json (key, object)
+  std::vector<std::pair<std::string, Json>> extras;  // command-specific objects for run.json (key, object)
 };
 
 // Unaligned errors of an estimate against the truth in the same frame.
@@ -53,10 +53,10 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
                                          const std::vector<StampedPose>& truth);
 
 // The localiser's counts as run.json's "localizer" object.
-JsonObject LocalizerStatsJson(const pipeline::LocalizerStats& stats);
+Json LocalizerStatsJson(const pipeline::LocalizerStats& stats);
 // Stage times as run.json's "stages" object (seconds, and each stage's share
 // of processing_s), printed as one line when print is set.
-JsonObject StageTimesJson(const pipeline::StageTimes& times, double processing_s, bool print);
+Json StageTimesJson(const pipeline::StageTimes& times, double processing_s, bool print);
 
 // The progress line on stderr: scans, scans/s, real-time factor, ETA.
 void PrintRunProgress(const pipeline::RunProgress& progress);
