@@ -31,7 +31,7 @@ MotionPrediction ConstantVelocityPrior::Predict(double t0, double t1) const {
   out.ok = true;
   out.T_prev_next.linear() = ExpQ(rate_body_rad_s_ * dt).toRotationMatrix();
   out.T_prev_next.translation() = velocity_body_m_s_ * dt;
-  out.covariance = UnmodelledMotionCovariance(options_, dt);
+  out.covariance = UnmodeledMotionCovariance(options_, dt);
   if (observed_ < 2) {  // no velocity yet: anything up to the fastest expected motion
     const double sigma_p = options_.max_speed_m_s * dt;
     const double sigma_r = options_.max_rate_rad_s * dt;

@@ -29,7 +29,7 @@ bool MotionPriorOptions::IsValid(std::string* why) const {
   return true;
 }
 
-Eigen::Matrix<double, 6, 6> UnmodelledMotionCovariance(const MotionPriorOptions& options, double dt) {
+Eigen::Matrix<double, 6, 6> UnmodeledMotionCovariance(const MotionPriorOptions& options, double dt) {
   const double sigma_p = options.velocity_sigma_m_s * dt;
   const double sigma_r = options.rate_sigma_rad_s * dt;
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();

@@ -38,7 +38,7 @@ struct MotionPriorOptions {
 
 // Covariance of [dp, dtheta] after dt seconds of motion unmodelled at the
 // constant-velocity sigmas: diag((velocity_sigma_m_s dt)^2 x3, (rate_sigma_rad_s dt)^2 x3).
-Eigen::Matrix<double, 6, 6> UnmodelledMotionCovariance(const MotionPriorOptions& options, double dt);
+Eigen::Matrix<double, 6, 6> UnmodeledMotionCovariance(const MotionPriorOptions& options, double dt);
 
 // "imu", "odometry", "constant-velocity"; false for anything else.
 bool ParseMotionSource(const std::string& text, MotionSource* source);

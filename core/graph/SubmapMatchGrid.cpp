@@ -84,8 +84,8 @@ void SubmapMatchGrid::BuildBase(const std::vector<Eigen::Vector3f>& points_subma
       first[a] = lo;
       count[a] = std::min(kMaxSpan, hi - lo + 1);
       for (int i = 0; i < count[a]; ++i) {
-        const double centre = origin_m_[a] + (lo + i + 0.5) * resolution_m_;
-        const double gap = std::max(0.0, std::abs(p[a] - centre) - half);
+        const double center = origin_m_[a] + (lo + i + 0.5) * resolution_m_;
+        const double gap = std::max(0.0, std::abs(p[a] - center) - half);
         box2[a][i] = gap * gap;
       }
     }

@@ -51,20 +51,20 @@ Eigen::Vector3f DecodeNormal(std::uint16_t code) {
 CellPlanes::CellPlanes(std::size_t cell_count)
     : cells_(cell_count, static_cast<std::uint16_t>(kNone)) {}
 
-void CellPlanes::Set(std::size_t index, const Eigen::Vector3f& normal, float centre_height_m) {
+void CellPlanes::Set(std::size_t index, const Eigen::Vector3f& normal, float center_height_m) {
   assert(index < cells_.size());
-  const float steps = std::clamp(std::round(centre_height_m / kHeightStepM), -32767.0f, 32767.0f);
+  const float steps = std::clamp(std::round(center_height_m / kHeightStepM), -32767.0f, 32767.0f);
   const auto height = static_cast<std::uint16_t>(static_cast<std::int16_t>(steps));
   cells_[index] = static_cast<std::uint32_t>(EncodeNormal(normal)) << 16 | height;
 }
 
-bool CellPlanes::Get(std::size_t index, Eigen::Vector3f* normal, float* centre_height_m) const {
+bool CellPlanes::Get(std::size_t index, Eigen::Vector3f* normal, float* center_height_m) const {
   assert(index < cells_.size());
   const std::uint32_t cell = cells_[index];
   const auto height = static_cast<std::int16_t>(cell & 0xffff);
   if (height == kNone) return false;
   *normal = DecodeNormal(static_cast<std::uint16_t>(cell >> 16));
-  *centre_height_m = static_cast<float>(height) * kHeightStepM;
+  *center_height_m = static_cast<float>(height) * kHeightStepM;
   return true;
 }
 

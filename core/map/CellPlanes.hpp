@@ -29,9 +29,9 @@ class CellPlanes {
 
   // Sets cell index's plane: unit normal and the signed height of the cell
   // centre above it (clamped to the representable range).
-  void Set(std::size_t index, const Eigen::Vector3f& normal, float centre_height_m);
+  void Set(std::size_t index, const Eigen::Vector3f& normal, float center_height_m);
   // Cell index's plane; false when it has none.
-  bool Get(std::size_t index, Eigen::Vector3f* normal, float* centre_height_m) const;
+  bool Get(std::size_t index, Eigen::Vector3f* normal, float* center_height_m) const;
 
   std::size_t size() const { return cells_.size(); }
   std::size_t MemoryBytes() const { return cells_.size() * sizeof(std::uint32_t); }

@@ -249,10 +249,10 @@ bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* norma
   const Eigen::Vector3f f = (p_map - origin_m_) * inv_resolution_;
   if (!((f.array() >= 0.0f).all() && (f.array() < dims_f_.array()).all())) return false;
   const Eigen::Vector3i cell = f.cast<int>();
-  float centre_height_m = 0.0f;
-  if (!planes_.Get(CellIndex(cell), normal, &centre_height_m)) return false;
+  float center_height_m = 0.0f;
+  if (!planes_.Get(CellIndex(cell), normal, &center_height_m)) return false;
   // height(x) = h_c + n . (x - c) = n . x + (h_c - n . c).
-  *offset_m = centre_height_m - normal->dot(CellCentre(cell));
+  *offset_m = center_height_m - normal->dot(CellCenter(cell));
   return true;
 }
 
@@ -265,7 +265,7 @@ float DistanceField::CellValue(const Eigen::Vector3i& cell) const {
   return static_cast<float>(Code(cell.x(), cell.y(), cell.z()) >> shift_) * step_m_ - offset_m_;
 }
 
-Eigen::Vector3f DistanceField::CellCentre(const Eigen::Vector3i& cell) const {
+Eigen::Vector3f DistanceField::CellCenter(const Eigen::Vector3i& cell) const {
   return origin_m_ + (cell.cast<float>().array() + 0.5f).matrix() * resolution_m_;
 }
 

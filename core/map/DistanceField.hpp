@@ -129,7 +129,7 @@ class DistanceField {
   // fields; equals CellDistance in kUnsigned ones); clamp() outside the grid.
   float CellValue(const Eigen::Vector3i& cell) const;
   // Centre of a cell in the map frame.
-  Eigen::Vector3f CellCentre(const Eigen::Vector3i& cell) const;
+  Eigen::Vector3f CellCenter(const Eigen::Vector3i& cell) const;
   // True when p_map lies inside the box.
   bool Contains(const Eigen::Vector3f& p_map) const;
 

@@ -94,11 +94,11 @@ void DistanceMap::EnableDistances() {
   Enqueue(std::move(job));
 }
 
-void DistanceMap::SetCenter(const Eigen::Vector3f& centre_map) {
-  CheckPosition(centre_map, "box centre");
+void DistanceMap::SetCenter(const Eigen::Vector3f& center_map) {
+  CheckPosition(center_map, "box centre");
   Job job;
-  job.sensor_map = centre_map;
-  job.force_centre = true;
+  job.sensor_map = center_map;
+  job.force_center = true;
   Enqueue(std::move(job));
 }
 
@@ -130,9 +130,9 @@ void DistanceMap::WaitForUpdates() {
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }
 
-std::vector<Eigen::Vector3f> DistanceMap::OccupiedVoxelCentres() const {
+std::vector<Eigen::Vector3f> DistanceMap::OccupiedVoxelCenters() const {
   std::lock_guard<std::mutex> lock(octree_mutex_);
-  return tree_->OccupiedVoxelCentres();
+  return tree_->OccupiedVoxelCenters();
 }
 
 void DistanceMap::VisitOctree(const std::function<void(const octomap::OcTree&)>& visit) const {
@@ -175,7 +175,7 @@ void DistanceMap::WorkerLoop() {
       {
         std::lock_guard<std::mutex> lock(octree_mutex_);
         region_.reset();  // start over around the next sensor position
-        has_centre_ = false;
+        has_center_ = false;
       }
       {
         std::lock_guard<std::mutex> lock(stats_mutex_);
@@ -196,12 +196,12 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   std::unique_lock<std::mutex> lock(octree_mutex_);
   const Clock::time_point start = Clock::now();
   KeyBox endpoints;
-  bool recentre = false;
+  bool recenter = false;
   bool changed = false;  // points inserted or distances enabled: the field may change
   DistanceMapStats counts;
   for (Job& job : jobs) {
     if (job.enable_distances) {
-      recentre = recentre || (!distances_on_ && has_centre_);
+      recenter = recenter || (!distances_on_ && has_center_);
       distances_on_ = true;
       changed = true;
       continue;
@@ -213,16 +213,16 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
       counts.points_inserted += job.points_map.size();
     }
     const Eigen::Vector3i sensor_key = tree_->KeyOf(job.sensor_map);
-    if (job.force_centre || !has_centre_ ||
-        (options_.follow_sensor && planner_.NeedsRecentre(centre_key_, sensor_key))) {
-      centre_key_ = sensor_key;
-      has_centre_ = true;
-      recentre = true;
+    if (job.force_center || !has_center_ ||
+        (options_.follow_sensor && planner_.NeedsRecenter(center_key_, sensor_key))) {
+      center_key_ = sensor_key;
+      has_center_ = true;
+      recenter = true;
     }
   }
   sequence_ += jobs.size();
   const Clock::time_point inserted = Clock::now();
-  if (!changed && !recentre) {
+  if (!changed && !recenter) {
     // Only sensor positions inside the current box (e.g. localisation in a
     // fixed map): nothing can have changed, the last field stays published.
     return nullptr;
@@ -231,8 +231,8 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   bool rebuilt = false;
   if (!distances_on_) {
     // A growing submap: the octree only (the changes are not consumed).
-  } else if (recentre) {
-    sensor_box_ = planner_.SensorBox(centre_key_);
+  } else if (recenter) {
+    sensor_box_ = planner_.SensorBox(center_key_);
     occupied_ = tree_->OccupiedExtent(sensor_box_);
     rebuilt = RebuildRegion();
   } else {
@@ -276,7 +276,7 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
 
 bool DistanceMap::RebuildRegion() {
   bool shrunk = false;
-  const KeyBox field_box = planner_.FieldBox(occupied_, sensor_box_, centre_key_, &shrunk);
+  const KeyBox field_box = planner_.FieldBox(occupied_, sensor_box_, center_key_, &shrunk);
   if (shrunk) {
     std::lock_guard<std::mutex> stats_lock(stats_mutex_);
     ++stats_.budget_shrinks;

@@ -34,7 +34,7 @@ class OccupancyTree;
 // the sensor inside the box keeps the last one, with its sequence) that
 // readers take with Snapshot() without ever waiting for an update in
 // progress. The box follows the sensor: when it moves farther than
-// recentre_fraction * max_range_m from the box centre, the transform is
+// recenter_fraction * max_range_m from the box centre, the transform is
 // rebuilt around it (the previous snapshot stays valid until the new one is
 // published). The box is clipped to the occupied voxels near the
 // sensor (see FieldBoxPlanner). Requests queued while an update runs are
@@ -48,18 +48,18 @@ class DistanceMap : public ScanMap {
   // An empty map. Throws ConfigError when the options are invalid.
   explicit DistanceMap(const DistanceMapOptions& options);
   // A prior map from an octree (its resolution replaces options.resolution_m),
-  // boxed around centre_map. The first field is built in the background.
+  // boxed around center_map. The first field is built in the background.
   static std::unique_ptr<DistanceMap> FromOctree(std::unique_ptr<octomap::OcTree> tree,
                                                  const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& centre_map);
+                                                 const Eigen::Vector3f& center_map);
   // A prior map from an OctoMap .bt file. Throws InputError when it cannot be read.
   static std::unique_ptr<DistanceMap> LoadBt(const std::filesystem::path& path,
                                              const DistanceMapOptions& options,
-                                             const Eigen::Vector3f& centre_map);
+                                             const Eigen::Vector3f& center_map);
   // A prior map whose occupied voxels are those holding a point (map frame).
   static std::unique_ptr<DistanceMap> FromPoints(const std::vector<Eigen::Vector3f>& points_map,
                                                  const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& centre_map);
+                                                 const Eigen::Vector3f& center_map);
   // Stops the background thread; queued scans not yet integrated are dropped.
   ~DistanceMap() override;
   DistanceMap(const DistanceMap&) = delete;
@@ -76,8 +76,8 @@ class DistanceMap : public ScanMap {
   // false: the next update builds it over the box around the last sensor
   // position (WaitForUpdates() waits for it). No effect when already on.
   void EnableDistances();
-  // Moves the box centre to centre_map regardless of the policy.
-  void SetCenter(const Eigen::Vector3f& centre_map);
+  // Moves the box centre to center_map regardless of the policy.
+  void SetCenter(const Eigen::Vector3f& center_map);
 
   // The latest published field (never null; empty until the first update).
   std::shared_ptr<const DistanceField> Snapshot() const override;
@@ -86,7 +86,7 @@ class DistanceMap : public ScanMap {
   void WaitForUpdates() override;
 
   // Centres of all occupied voxels (waits while an update holds the octree).
-  std::vector<Eigen::Vector3f> OccupiedVoxelCentres() const;
+  std::vector<Eigen::Vector3f> OccupiedVoxelCenters() const;
   // Calls visit with the octree under the map's lock (e.g. to write a .bt).
   // With clear_occupied_only the tree holds only voxels that were ever hit:
   // free space reads as unknown.
@@ -103,7 +103,7 @@ class DistanceMap : public ScanMap {
   struct Job {
     std::vector<Eigen::Vector3f> points_map;  // scan to insert (empty: position only)
     Eigen::Vector3f sensor_map = Eigen::Vector3f::Zero();  // sensor position / forced centre
-    bool force_centre = false;                // sensor_map is a forced box centre
+    bool force_center = false;                // sensor_map is a forced box centre
     bool enable_distances = false;            // turns the distance transform on (no position)
   };
 
@@ -128,9 +128,9 @@ class DistanceMap : public ScanMap {
   std::unique_ptr<OccupancyTree> tree_;
   FieldBoxPlanner planner_;
   std::unique_ptr<EdtRegion> region_;
-  bool has_centre_ = false;
+  bool has_center_ = false;
   bool distances_on_ = true;  // options_.compute_distances until EnableDistances()
-  Eigen::Vector3i centre_key_ = Eigen::Vector3i::Zero();
+  Eigen::Vector3i center_key_ = Eigen::Vector3i::Zero();
   KeyBox sensor_box_;
   KeyBox occupied_;  // occupied voxels of sensor_box_ (grown conservatively)
   std::uint64_t sequence_ = 0;

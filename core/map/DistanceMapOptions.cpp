@@ -24,8 +24,8 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
       clamp_distance_m > max_range_m) {
     return Fail(why, "clamp_distance_m must lie in [resolution_m, max_range_m]");
   }
-  if (!(recentre_fraction > 0.0 && recentre_fraction <= 1.0)) {
-    return Fail(why, "recentre_fraction must lie in (0, 1]");
+  if (!(recenter_fraction > 0.0 && recenter_fraction <= 1.0)) {
+    return Fail(why, "recenter_fraction must lie in (0, 1]");
   }
   if (!(std::isfinite(growth_margin_m) && growth_margin_m >= 0.0)) {
     return Fail(why, "growth_margin_m must be finite and non-negative");
@@ -53,7 +53,7 @@ void DistanceMapOptions::VisitFields(options::FieldVisitor& v) {
   v.SetElsewhere("resolution_m", "the platform parameter distance_map_resolution_m");
   v.SetElsewhere("max_range_m", "the platform parameter distance_map_max_range_m");
   v.Field("clamp_distance_m", &clamp_distance_m, "m");
-  v.Field("recentre_fraction", &recentre_fraction, "");
+  v.Field("recenter_fraction", &recenter_fraction, "");
   v.SetElsewhere("follow_sensor", "the mapper (each submap's box)");
   v.Field("growth_margin_m", &growth_margin_m, "m");
   v.Field("max_edt_cells", &max_edt_cells, "count");

@@ -12,7 +12,7 @@ struct DistanceMapOptions {
   double resolution_m = 0.1;      // voxel edge of the octree and of the distance grid (m)
   double max_range_m = 15.0;      // half-size of the box around the sensor that holds distances (m)
   double clamp_distance_m = 1.0;  // distances are exact up to this; farther lookups return it (m)
-  double recentre_fraction = 0.25;  // start a new box when the sensor is farther than this
+  double recenter_fraction = 0.25;  // start a new box when the sensor is farther than this
                                     // fraction of max_range_m from the box centre (per axis)
   bool follow_sensor = true;       // false: the box moves only on DistanceMap::SetCenter
   double growth_margin_m = 0.5;    // slack added when the box grows to cover new obstacles (m)

@@ -14,18 +14,18 @@ namespace unimap::map {
 
 std::unique_ptr<DistanceMap> DistanceMap::FromOctree(std::unique_ptr<octomap::OcTree> tree,
                                                      const DistanceMapOptions& options,
-                                                     const Eigen::Vector3f& centre_map) {
+                                                     const Eigen::Vector3f& center_map) {
   if (tree == nullptr) throw InputError("DistanceMap::FromOctree: null octree");
   const DistanceMapOptions valid = ValidOptions(options, tree->getResolution());
   auto occupancy = std::make_unique<OccupancyTree>(std::move(tree), valid);
   std::unique_ptr<DistanceMap> map(new DistanceMap(std::move(occupancy), valid));
-  map->SetCenter(centre_map);
+  map->SetCenter(center_map);
   return map;
 }
 
 std::unique_ptr<DistanceMap> DistanceMap::LoadBt(const std::filesystem::path& path,
                                                  const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& centre_map) {
+                                                 const Eigen::Vector3f& center_map) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw InputError("cannot read octree '" + path.string() + "': no such file");
@@ -34,17 +34,17 @@ std::unique_ptr<DistanceMap> DistanceMap::LoadBt(const std::filesystem::path& pa
   if (!tree->readBinary(path.string())) {
     throw InputError("cannot read octree '" + path.string() + "': not a valid OctoMap .bt file");
   }
-  return FromOctree(std::move(tree), options, centre_map);
+  return FromOctree(std::move(tree), options, center_map);
 }
 
 std::unique_ptr<DistanceMap> DistanceMap::FromPoints(const std::vector<Eigen::Vector3f>& points_map,
                                                      const DistanceMapOptions& options,
-                                                     const Eigen::Vector3f& centre_map) {
+                                                     const Eigen::Vector3f& center_map) {
   const DistanceMapOptions valid = ValidOptions(options, options.resolution_m);
   auto occupancy = std::make_unique<OccupancyTree>(valid);
   occupancy->MarkOccupied(points_map);
   std::unique_ptr<DistanceMap> map(new DistanceMap(std::move(occupancy), valid));
-  map->SetCenter(centre_map);
+  map->SetCenter(center_map);
   return map;
 }
 

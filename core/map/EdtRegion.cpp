@@ -25,11 +25,11 @@ EdtRegion::EdtRegion(octomap::OcTree* tree, const KeyBox& box, float clamp_m)
     : tree_(tree), box_(box), clamp_m_(clamp_m) {
   if (tree_ == nullptr || box_.IsEmpty()) throw InputError("EdtRegion: needs a tree and a box");
   tree_->resetChangeDetection();
-  const octomap::point3d min_centre = tree_->keyToCoord(ToOctreeKey(box_.min()));
-  const octomap::point3d max_centre = tree_->keyToCoord(ToOctreeKey(box_.max()));
+  const octomap::point3d min_center = tree_->keyToCoord(ToOctreeKey(box_.min()));
+  const octomap::point3d max_center = tree_->keyToCoord(ToOctreeKey(box_.max()));
   // One voxel beyond the clamp so every distance up to clamp_m is exact.
   const float max_distance_m = clamp_m_ + static_cast<float>(tree_->getResolution());
-  edt_ = std::make_unique<DynamicEDTOctomap>(max_distance_m, tree_, min_centre, max_centre,
+  edt_ = std::make_unique<DynamicEDTOctomap>(max_distance_m, tree_, min_center, max_center,
                                              /*treatUnknownAsOccupied=*/false);
   edt_->update(/*updateRealDist=*/true);
 }
@@ -44,10 +44,10 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
   const Eigen::Vector3i dims = box_.Dims();
   std::vector<std::uint16_t> cells(box_.CellCount());
   const double half_voxel_m = 0.5 * tree_->getResolution();
-  const octomap::point3d min_centre = tree_->keyToCoord(ToOctreeKey(box_.min()));
-  const Eigen::Vector3f origin_m(static_cast<float>(min_centre.x() - half_voxel_m),
-                                 static_cast<float>(min_centre.y() - half_voxel_m),
-                                 static_cast<float>(min_centre.z() - half_voxel_m));
+  const octomap::point3d min_center = tree_->keyToCoord(ToOctreeKey(box_.min()));
+  const Eigen::Vector3f origin_m(static_cast<float>(min_center.x() - half_voxel_m),
+                                 static_cast<float>(min_center.y() - half_voxel_m),
+                                 static_cast<float>(min_center.z() - half_voxel_m));
   const auto make_field = [&](DistanceField::Encoding encoding) {
     return std::make_shared<DistanceField>(origin_m, dims, static_cast<float>(tree_->getResolution()),
                                            clamp_m_, std::move(cells), sequence, encoding);
@@ -101,7 +101,7 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
   // cast to an inaccessible base is well-defined ([expr.cast]/4).
   const DynamicEDT3D& cells_edt = (const DynamicEDT3D&)(*edt_);
   const float resolution_m = static_cast<float>(tree_->getResolution());
-  const Eigen::Vector3f min_centre = Eigen::Vector3f(
+  const Eigen::Vector3f min_center = Eigen::Vector3f(
       static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().x()))),
       static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().y()))),
       static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().z()))));
@@ -121,11 +121,11 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
             seen.key = SurfacePoints::Pack(box_.min() + Eigen::Vector3i(obstacle.x, obstacle.y, obstacle.z));
             seen.element = element_of(seen.key, in_plane, z > 0, y > 0);
             if (seen.element != nullptr) {
-              const Eigen::Vector3f centre = min_centre + cell.cast<float>() * resolution_m;
-              distance_m = surfaces.SignedDistance(*seen.element, centre);
+              const Eigen::Vector3f center = min_center + cell.cast<float>() * resolution_m;
+              distance_m = surfaces.SignedDistance(*seen.element, center);
               if (planes != nullptr && seen.element->planar) {
                 planes->Set(index, seen.element->normal,
-                            seen.element->normal.dot(centre - seen.element->mean_m));
+                            seen.element->normal.dot(center - seen.element->mean_m));
               }
             }
           }

@@ -126,11 +126,11 @@ KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map,
     const Eigen::Vector3i key = KeyOf(p);
     endpoints.Extend(key);
     const bool first_in_voxel = hits.insert(Pack(key)).second;
-    if (surfaces_ != nullptr) surfaces_->Add(Pack(key), KeyCentre(key), p, &origin_map);
+    if (surfaces_ != nullptr) surfaces_->Add(Pack(key), KeyCenter(key), p, &origin_map);
     if (!options_.discretize_rays) {
       ends.push_back(p);
     } else if (first_in_voxel) {
-      ends.push_back(KeyCentre(key));
+      ends.push_back(KeyCenter(key));
     }
   }
   if (options_.raycast_free_space) ClearOccupiedAlongRays(origin_map, ends, hits);
@@ -185,7 +185,7 @@ KeyBox OccupancyTree::InsertWithOctomap(const std::vector<Eigen::Vector3f>& poin
     const Eigen::Vector3i key = KeyOf(p);
     endpoints.Extend(key);
     if (surfaces_ != nullptr) {
-      surfaces_->Add(Pack(key), KeyCentre(key), p, &origin_map);
+      surfaces_->Add(Pack(key), KeyCenter(key), p, &origin_map);
       hits.insert(Pack(key));
     }
   }
@@ -210,7 +210,7 @@ KeyBox OccupancyTree::InsertWithOctomap(const std::vector<Eigen::Vector3f>& poin
 void OccupancyTree::SyncSurface(const Eigen::Vector3i& key) {
   const octomap::OcTreeNode* node = tree_->search(ToOctreeKey(key));
   if (node != nullptr && tree_->isNodeOccupied(node)) {
-    surfaces_->Refresh(Pack(key), KeyCentre(key));
+    surfaces_->Refresh(Pack(key), KeyCenter(key));
   } else {
     surfaces_->Erase(Pack(key));
   }
@@ -223,7 +223,7 @@ void OccupancyTree::UpdateVoxel(const Eigen::Vector3i& key, bool hit) {
     if (!occupied) {
       surfaces_->Erase(Pack(key));
     } else if (hit) {
-      surfaces_->Refresh(Pack(key), KeyCentre(key));
+      surfaces_->Refresh(Pack(key), KeyCenter(key));
     }
   }
   if (!tracks_occupied_) return;
@@ -245,19 +245,19 @@ void OccupancyTree::MarkOccupied(const std::vector<Eigen::Vector3f>& points_map)
     const Eigen::Vector3i voxel = FromOctreeKey(key);
     if (tracks_occupied_) occupied_.insert(Pack(voxel));
     if (surfaces_ != nullptr) {
-      surfaces_->Add(Pack(voxel), KeyCentre(voxel), p, /*sensor_map=*/nullptr);
+      surfaces_->Add(Pack(voxel), KeyCenter(voxel), p, /*sensor_map=*/nullptr);
       marked.insert(Pack(voxel));
     }
   }
   if (surfaces_ == nullptr) return;
-  for (const std::uint64_t key : marked) surfaces_->Refresh(key, KeyCentre(Unpack(key)));
+  for (const std::uint64_t key : marked) surfaces_->Refresh(key, KeyCenter(Unpack(key)));
 }
 
 Eigen::Vector3i OccupancyTree::KeyOf(const Eigen::Vector3f& p_map) const {
   return FromOctreeKey(tree_->coordToKey(p_map.x(), p_map.y(), p_map.z()));
 }
 
-Eigen::Vector3f OccupancyTree::KeyCentre(const Eigen::Vector3i& key) const {
+Eigen::Vector3f OccupancyTree::KeyCenter(const Eigen::Vector3i& key) const {
   const octomap::point3d c = tree_->keyToCoord(ToOctreeKey(key));
   return Eigen::Vector3f(c.x(), c.y(), c.z());
 }
@@ -271,18 +271,18 @@ KeyBox OccupancyTree::OccupiedExtent(const KeyBox& within) const {
   return extent.Intersection(within);
 }
 
-std::vector<Eigen::Vector3f> OccupancyTree::OccupiedVoxelCentres() const {
-  std::vector<Eigen::Vector3f> centres;
+std::vector<Eigen::Vector3f> OccupancyTree::OccupiedVoxelCenters() const {
+  std::vector<Eigen::Vector3f> centers;
   ForEachOccupiedLeaf(*tree_, nullptr, [&](const Eigen::Vector3i& min_key, int size) {
     for (int dx = 0; dx < size; ++dx) {
       for (int dy = 0; dy < size; ++dy) {
         for (int dz = 0; dz < size; ++dz) {
-          centres.push_back(KeyCentre(min_key + Eigen::Vector3i(dx, dy, dz)));
+          centers.push_back(KeyCenter(min_key + Eigen::Vector3i(dx, dy, dz)));
         }
       }
     }
   });
-  return centres;
+  return centers;
 }
 
 }  // namespace unimap::map

@@ -53,11 +53,11 @@ class OccupancyTree {
   // Key of the voxel containing p (p within +-HalfRangeM()).
   Eigen::Vector3i KeyOf(const Eigen::Vector3f& p_map) const;
   // Centre of the voxel with key.
-  Eigen::Vector3f KeyCentre(const Eigen::Vector3i& key) const;
+  Eigen::Vector3f KeyCenter(const Eigen::Vector3i& key) const;
   // Box of the occupied voxels inside within (empty when there are none).
   KeyBox OccupiedExtent(const KeyBox& within) const;
   // Centres of all occupied voxels (pruned nodes expanded to voxels).
-  std::vector<Eigen::Vector3f> OccupiedVoxelCentres() const;
+  std::vector<Eigen::Vector3f> OccupiedVoxelCenters() const;
 
   double resolution_m() const { return resolution_m_; }
   // Coordinates must stay within +- this (16-bit octree keys).

@@ -53,7 +53,7 @@ bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element&
   return change_voxels > SurfaceDistanceLayer::kMoveTolerance;
 }
 
-// True when the ray from sensor_map to the return in end_voxel_centre_map
+// True when the ray from sensor_map to the return in end_voxel_center_map
 // passes through the surface of element: always for elements without a
 // plane; for planar ones, when the ray crosses the plane with its end
 // clearly behind it (by more than the voxel centre may misplace the return
@@ -62,14 +62,14 @@ bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element&
 // that surface before its return without crossing it (docs/design.md 1.4):
 // those are not misses.
 bool CrossesElement(const SurfacePoints::Element& element, const Eigen::Vector3f& sensor_map,
-                    const Eigen::Vector3f& end_voxel_centre_map, float resolution_m) {
+                    const Eigen::Vector3f& end_voxel_center_map, float resolution_m) {
   if (!element.planar) return true;
   const float h_start = element.normal.dot(sensor_map - element.mean_m);
-  const float h_end = element.normal.dot(end_voxel_centre_map - element.mean_m);
+  const float h_end = element.normal.dot(end_voxel_center_map - element.mean_m);
   const float margin = 0.5f * resolution_m * element.normal.cwiseAbs().sum();
   if (!((h_start > 0.0f && h_end < -margin) || (h_start < 0.0f && h_end > margin))) return false;
   const Eigen::Vector3f crossing =
-      sensor_map + (h_start / (h_start - h_end)) * (end_voxel_centre_map - sensor_map);
+      sensor_map + (h_start / (h_start - h_end)) * (end_voxel_center_map - sensor_map);
   const float radius = SurfacePoints::kPatchRadius * resolution_m;
   return (crossing - element.mean_m).squaredNorm() <= radius * radius;
 }
@@ -77,9 +77,9 @@ bool CrossesElement(const SurfacePoints::Element& element, const Eigen::Vector3f
 }  // namespace
 
 bool SurfaceDistanceLayer::RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
-                                             const Eigen::Vector3f& end_voxel_centre_map) const {
+                                             const Eigen::Vector3f& end_voxel_center_map) const {
   return site.element == nullptr ||
-         CrossesElement(*site.element, sensor_map, end_voxel_centre_map, static_cast<float>(options_.resolution_m));
+         CrossesElement(*site.element, sensor_map, end_voxel_center_map, static_cast<float>(options_.resolution_m));
 }
 
 struct SurfaceDistanceLayer::WorkBlock {
@@ -117,7 +117,7 @@ bool SurfaceDistanceLayer::KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* 
   return true;
 }
 
-Eigen::Vector3f SurfaceDistanceLayer::Centre(const Eigen::Vector3i& key) const {
+Eigen::Vector3f SurfaceDistanceLayer::Center(const Eigen::Vector3i& key) const {
   return ((key.cast<double>().array() - kKeyOffset + 0.5) * options_.resolution_m).cast<float>().matrix();
 }
 
@@ -148,7 +148,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
       continue;
     }
     const std::uint64_t packed = SurfacePoints::Pack(key);
-    surfaces_.Add(packed, Centre(key), p, &sensor_map);
+    surfaces_.Add(packed, Center(key), p, &sensor_map);
     touched.push_back(packed);
     ++counts_.points_added;
   }
@@ -158,7 +158,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   std::vector<Site*> appeared;
   for (const std::uint64_t packed : touched) {
     const Eigen::Vector3i key = Unpack(packed);
-    surfaces_.Refresh(packed, Centre(key));
+    surfaces_.Refresh(packed, Center(key));
     auto found = sites_.find(packed);
     if (found == sites_.end()) {
       site_store_.emplace_back();
@@ -233,10 +233,10 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
   };
   for (const std::uint64_t packed : endpoints) {
     const Eigen::Vector3i end = Unpack(packed);
-    const Eigen::Vector3f end_centre = Centre(end);
+    const Eigen::Vector3f end_center = Center(end);
     WalkRay(origin, end, lookup, [&](const Eigen::Vector3i& voxel) {
       Site& site = *sites_.at(SurfacePoints::Pack(voxel));
-      if (site.missed_in == scans_ || !RayCrossesSurface(site, sensor_map, end_centre)) return false;
+      if (site.missed_in == scans_ || !RayCrossesSurface(site, sensor_map, end_center)) return false;
       site.missed_in = scans_;
       ++counts_.misses;
       site.log_odds = std::max(site.log_odds + log_odds_miss_, log_odds_min_);
@@ -329,18 +329,18 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
   // 3x3x3 blocks around the voxel's block: those are looked up once per
   // site (neighbourhood[], filled on first use) instead of once per cell.
   const bool local = reach_ <= kEdge;
-  std::array<WorkBlock*, 27> neighbourhood{};
+  std::array<WorkBlock*, 27> neighborhood{};
   std::uint32_t recorded = 0;  // neighbourhood blocks already in site->blocks
-  const Site* neighbourhood_site = nullptr;
+  const Site* neighborhood_site = nullptr;
   Eigen::Vector3i site_block = Eigen::Vector3i::Zero();
   Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried (general path)
   WorkBlock* cached = nullptr;
   for (std::size_t head = 0; head < queue->size(); ++head) {
     const auto [cell, site] = (*queue)[head];
-    if (local && site != neighbourhood_site) {
-      neighbourhood_site = site;
+    if (local && site != neighborhood_site) {
+      neighborhood_site = site;
       site_block = BlockOf(site->key);
-      neighbourhood.fill(nullptr);
+      neighborhood.fill(nullptr);
       recorded = 0;
     }
     Eigen::Vector3i recorded_key = Eigen::Vector3i::Constant(-1);  // the last block added to site->blocks
@@ -355,7 +355,7 @@ void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>
         if (sq > reach_sq) continue;
         const Eigen::Vector3i l = next - base;  // in [0, 3 kEdge)
         const int slot = ((l.x() >> kShiftBlock) * 3 + (l.y() >> kShiftBlock)) * 3 + (l.z() >> kShiftBlock);
-        WorkBlock*& block = neighbourhood[static_cast<std::size_t>(slot)];
+        WorkBlock*& block = neighborhood[static_cast<std::size_t>(slot)];
         if (block == nullptr) block = BlockAt(next, true);
         const auto offset =
             static_cast<std::size_t>(DistanceField::BlockOffset(l.x() & kMask, l.y() & kMask, l.z() & kMask));
@@ -420,9 +420,9 @@ void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& bloc
                                : std::make_shared<DistanceField::Block>(
                                      static_cast<std::size_t>(DistanceField::kBlockCells), DistanceField::kMaxSteps);
   // Cell centres per axis, as Centre() computes them.
-  std::array<Eigen::Vector3f, kEdge> axis_centres;
+  std::array<Eigen::Vector3f, kEdge> axis_centers;
   for (int i = 0; i < kEdge; ++i) {
-    axis_centres[static_cast<std::size_t>(i)] = Centre(block_key * kEdge + Eigen::Vector3i::Constant(i));
+    axis_centers[static_cast<std::size_t>(i)] = Center(block_key * kEdge + Eigen::Vector3i::Constant(i));
   }
   for (std::size_t word = 0; word < block->dirty_cells.size(); ++word) {
     for (std::uint64_t bits = block->dirty_cells[word]; bits != 0; bits &= bits - 1) {
@@ -435,10 +435,10 @@ void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& bloc
       const int x = static_cast<int>(offset >> (2 * DistanceField::kBlockShift));
       const int y = static_cast<int>((offset >> DistanceField::kBlockShift) & kMask);
       const int z = static_cast<int>(offset & kMask);
-      const Eigen::Vector3f centre(axis_centres[static_cast<std::size_t>(x)].x(),
-                                   axis_centres[static_cast<std::size_t>(y)].y(),
-                                   axis_centres[static_cast<std::size_t>(z)].z());
-      (*codes)[offset] = DistanceField::Quantise(surfaces_.SignedDistance(*owner->element, centre), clamp_m_);
+      const Eigen::Vector3f center(axis_centers[static_cast<std::size_t>(x)].x(),
+                                   axis_centers[static_cast<std::size_t>(y)].y(),
+                                   axis_centers[static_cast<std::size_t>(z)].z());
+      (*codes)[offset] = DistanceField::Quantise(surfaces_.SignedDistance(*owner->element, center), clamp_m_);
     }
   }
   block->dirty_cells.fill(0);
@@ -448,7 +448,7 @@ void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& bloc
   block->dirty = false;
 }
 
-std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::Vector3f& centre_map,
+std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::Vector3f& center_map,
                                                                   double half_range_m, std::uint64_t sequence) {
   const auto start = std::chrono::steady_clock::now();
   for (auto it = blocks_.begin(); it != blocks_.end(); ++it) {
@@ -461,8 +461,8 @@ std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::V
   if (half_range_m > 0.0) {
     const Eigen::Vector3f reach = Eigen::Vector3f::Constant(static_cast<float>(half_range_m));
     const double to_key = 1.0 / options_.resolution_m;
-    const Eigen::Vector3d a = ((centre_map - reach).cast<double>() * to_key).array().floor() + kKeyOffset;
-    const Eigen::Vector3d b = ((centre_map + reach).cast<double>() * to_key).array().floor() + kKeyOffset;
+    const Eigen::Vector3d a = ((center_map - reach).cast<double>() * to_key).array().floor() + kKeyOffset;
+    const Eigen::Vector3d b = ((center_map + reach).cast<double>() * to_key).array().floor() + kKeyOffset;
     low = low.cwiseMax(a.cwiseMax(0.0).cwiseMin(kMaxKey).cast<int>() / kEdge);
     high = high.cwiseMin(b.cwiseMax(0.0).cwiseMin(kMaxKey).cast<int>() / kEdge);
   }
@@ -487,17 +487,17 @@ std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::V
   return field;
 }
 
-std::vector<Eigen::Vector3f> SurfaceDistanceLayer::VoxelCentres() const {
+std::vector<Eigen::Vector3f> SurfaceDistanceLayer::VoxelCenters() const {
   std::vector<std::uint64_t> keys;
   keys.reserve(sites_.size());
   for (const auto& [packed, site] : sites_) {
     if (site->occupied) keys.push_back(packed);
   }
   std::sort(keys.begin(), keys.end());  // a deterministic order
-  std::vector<Eigen::Vector3f> centres;
-  centres.reserve(keys.size());
-  for (const std::uint64_t packed : keys) centres.push_back(Centre(Unpack(packed)));
-  return centres;
+  std::vector<Eigen::Vector3f> centers;
+  centers.reserve(keys.size());
+  for (const std::uint64_t packed : keys) centers.push_back(Center(Unpack(packed)));
+  return centers;
 }
 
 std::vector<Eigen::Vector3f> SurfaceDistanceLayer::SurfaceMeans() const {

@@ -87,14 +87,14 @@ class SurfaceDistanceLayer {
   void EnableDistances();
   bool distances() const { return distances_; }
 
-  // The distance field over the blocks within half_range_m of centre_map
+  // The distance field over the blocks within half_range_m of center_map
   // (every block when half_range_m <= 0), tagged with sequence; blocks
   // unchanged since the previous export are shared with it.
-  std::shared_ptr<const DistanceField> Export(const Eigen::Vector3f& centre_map, double half_range_m,
+  std::shared_ptr<const DistanceField> Export(const Eigen::Vector3f& center_map, double half_range_m,
                                               std::uint64_t sequence);
 
   // Centres of the occupied voxels (map frame), in key order.
-  std::vector<Eigen::Vector3f> VoxelCentres() const;
+  std::vector<Eigen::Vector3f> VoxelCenters() const;
   // The mean of the returns in each occupied voxel (map frame), in key
   // order: where the surface is, not where the voxel's centre happens to be.
   std::vector<Eigen::Vector3f> SurfaceMeans() const;
@@ -117,16 +117,16 @@ class SurfaceDistanceLayer {
   };
 
   bool KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* key) const;
-  Eigen::Vector3f Centre(const Eigen::Vector3i& key) const;
+  Eigen::Vector3f Center(const Eigen::Vector3i& key) const;
   WorkBlock* BlockAt(const Eigen::Vector3i& key, bool create);
   // The misses of the occupied voxels the rays of a scan (its returns'
   // voxels, from sensor_map) cross; *freed receives those that became free.
   void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
              std::vector<Site*>* freed);
   // True when a ray from sensor_map to the return whose voxel centre is
-  // end_voxel_centre_map passes through site's surface (a miss), not beside it.
+  // end_voxel_center_map passes through site's surface (a miss), not beside it.
   bool RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
-                         const Eigen::Vector3f& end_voxel_centre_map) const;
+                         const Eigen::Vector3f& end_voxel_center_map) const;
   // Sets or clears site's bit in the occupancy masks.
   void SetOccupied(Site* site, bool occupied);
   // Claims cells for site from its voxel outwards (see the class comment).

@@ -57,7 +57,7 @@ void SurfaceDistanceMap::InsertScan(std::vector<Eigen::Vector3f> points_map, con
 void SurfaceDistanceMap::UpdateSensorPosition(const Eigen::Vector3f& sensor_map) {
   if (!sensor_map.allFinite()) throw InputError("SurfaceDistanceMap: sensor position must be finite");
   std::lock_guard<std::mutex> lock(mutex_);
-  centre_map_ = sensor_map;
+  center_map_ = sensor_map;
 }
 
 void SurfaceDistanceMap::EnableDistances() {
@@ -112,19 +112,19 @@ void SurfaceDistanceMap::Run() {
     if (stop_) return;
     std::vector<Job> jobs;
     jobs.swap(queue_);
-    Eigen::Vector3f centre = centre_map_;
+    Eigen::Vector3f center = center_map_;
     lock.unlock();
     std::exception_ptr error;
     SurfaceDistanceMapStats stats;
     try {
       std::lock_guard<std::mutex> layer_lock(layer_mutex_);
-      Process(jobs, &centre, &stats);
+      Process(jobs, &center, &stats);
     } catch (const std::exception&) {
       error = std::current_exception();
     }
     lock.lock();
     if (error) error_ = error;
-    centre_map_ = centre;
+    center_map_ = center;
     stats_.scans_inserted += stats.scans_inserted;
     stats_.exports += stats.exports;
     stats_.insert_s += stats.insert_s;
@@ -135,7 +135,7 @@ void SurfaceDistanceMap::Run() {
   }
 }
 
-void SurfaceDistanceMap::Process(const std::vector<Job>& jobs, Eigen::Vector3f* centre_map,
+void SurfaceDistanceMap::Process(const std::vector<Job>& jobs, Eigen::Vector3f* center_map,
                                  SurfaceDistanceMapStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   bool changed = false;
@@ -146,7 +146,7 @@ void SurfaceDistanceMap::Process(const std::vector<Job>& jobs, Eigen::Vector3f* 
       continue;
     }
     layer_.Insert(job.points_map, job.sensor_map);
-    *centre_map = job.sensor_map;
+    *center_map = job.sensor_map;
     changed = true;
     ++stats->scans_inserted;
   }
@@ -154,7 +154,7 @@ void SurfaceDistanceMap::Process(const std::vector<Job>& jobs, Eigen::Vector3f* 
   stats->layer = layer_.counts();
   sequence_ += jobs.size();
   if (!changed || !layer_.distances()) return;
-  std::shared_ptr<const DistanceField> field = layer_.Export(*centre_map, options_.max_range_m, sequence_);
+  std::shared_ptr<const DistanceField> field = layer_.Export(*center_map, options_.max_range_m, sequence_);
   stats->layer = layer_.counts();
   ++stats->exports;
   stats->field_bytes = field->MemoryBytes();

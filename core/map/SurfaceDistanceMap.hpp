@@ -71,9 +71,9 @@ class SurfaceDistanceMap : public ScanMap {
   };
   void Run();
   // Integrates a batch of jobs (under layer_mutex_) and publishes when
-  // something changed; *centre_map is the box centre, moved to the last
+  // something changed; *center_map is the box centre, moved to the last
   // scan's sensor; *stats receives this batch's counts.
-  void Process(const std::vector<Job>& jobs, Eigen::Vector3f* centre_map, SurfaceDistanceMapStats* stats);
+  void Process(const std::vector<Job>& jobs, Eigen::Vector3f* center_map, SurfaceDistanceMapStats* stats);
 
   const DistanceMapOptions options_;
   mutable std::mutex layer_mutex_;  // held by the worker while it updates the layer
@@ -84,7 +84,7 @@ class SurfaceDistanceMap : public ScanMap {
   std::shared_ptr<const DistanceField> snapshot_;
 
   mutable std::mutex mutex_;  // guards everything below
-  Eigen::Vector3f centre_map_ = Eigen::Vector3f::Zero();
+  Eigen::Vector3f center_map_ = Eigen::Vector3f::Zero();
   std::condition_variable wake_;
   std::condition_variable idle_;
   std::vector<Job> queue_;

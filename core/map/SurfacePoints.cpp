@@ -63,7 +63,7 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
       patch_radius_m_(patch_radius_voxels * resolution_m_),
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 
-void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map,
+void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map,
                         const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map) {
   Entry* found = Lookup(key);
   if (found == nullptr) {
@@ -88,7 +88,7 @@ void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_centre_m
     entry.sum_sq *= keep;
     entry.sum_view *= keep;
   }
-  const Eigen::Vector3f d = p_map - voxel_centre_map;
+  const Eigen::Vector3f d = p_map - voxel_center_map;
   entry.weight += 1.0f;
   entry.adds_since_fit += 1.0f;
   entry.sum += d;
@@ -110,9 +110,9 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
   for (int dx = -1; dx <= 1; ++dx) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dz = -1; dz <= 1; ++dz) {
-        const Eigen::Vector3i neighbour(kx + dx, ky + dy, kz + dz);
-        if ((neighbour.array() < 0).any() || (neighbour.array() > 0xffff).any()) continue;
-        const Entry* found = Lookup(Pack(neighbour));
+        const Eigen::Vector3i neighbor(kx + dx, ky + dy, kz + dz);
+        if ((neighbor.array() < 0).any() || (neighbor.array() > 0xffff).any()) continue;
+        const Entry* found = Lookup(Pack(neighbor));
         if (found == nullptr) continue;
         const Entry& n = *found;
         // Shift the neighbour's moments by its centre offset o:
@@ -136,11 +136,11 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
   return pooled;
 }
 
-void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map) {
+void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map) {
   Entry* found = Lookup(key);
   if (found == nullptr) return;
   Entry& entry = *found;
-  entry.element.mean_m = voxel_centre_map + entry.sum / entry.weight;
+  entry.element.mean_m = voxel_center_map + entry.sum / entry.weight;
   const float refit_after =
       entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
   const bool refit = !entry.has_element || entry.adds_since_fit >= refit_after;

@@ -71,17 +71,17 @@ class SurfacePoints {
            static_cast<std::uint64_t>(key.z() & 0xffff);
   }
 
-  // Adds the return p_map to the voxel key whose centre is voxel_centre_map.
+  // Adds the return p_map to the voxel key whose centre is voxel_center_map.
   // sensor_map (null when unknown, e.g. prior point clouds) orients the plane.
   // The voxel's element changes only on Refresh.
-  void Add(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map, const Eigen::Vector3f& p_map,
+  void Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
            const Eigen::Vector3f* sensor_map);
   // Updates the element of key: its mean always; its plane (fitted to its
   // and its neighbours' returns) when none was fitted yet or the voxel got
   // kRefitFraction of its weight (a full kMaxWeight once the average is
   // exponential) in new returns since (no-op for unknown keys). Call it
   // after the Adds of a whole scan.
-  void Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_centre_map);
+  void Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
   // Forgets key (its voxel became free).
   void Erase(std::uint64_t key);
   // The element of key (as of its last Refresh), or null when the voxel has

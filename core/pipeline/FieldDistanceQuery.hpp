@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "map/DistanceField.hpp"
-#include "map/NeighbourhoodPlane.hpp"
+#include "map/NeighborhoodPlane.hpp"
 #include "matching/DistanceQuery.hpp"
 
 namespace unimap::pipeline {
@@ -13,12 +13,12 @@ namespace unimap::pipeline {
 // closer than a voxel are told apart) or the containing voxel's value.
 // Planes come from the field's cell planes or, given neighbourhood options,
 // from a plane fitted to the surface cells around each point
-// (FitNeighbourhoodPlane; only kPlanar neighbourhoods give one).
+// (FitNeighborhoodPlane; only kPlanar neighbourhoods give one).
 class FieldDistanceQuery final : public matching::DistanceQuery {
  public:
   FieldDistanceQuery(std::shared_ptr<const map::DistanceField> field, bool trilinear,
-                     std::optional<map::NeighbourhoodPlaneOptions> neighbourhood = std::nullopt)
-      : field_(std::move(field)), trilinear_(trilinear), neighbourhood_(neighbourhood) {}
+                     std::optional<map::NeighborhoodPlaneOptions> neighborhood = std::nullopt)
+      : field_(std::move(field)), trilinear_(trilinear), neighborhood_(neighborhood) {}
   void Distances(const Eigen::Vector3f* points_map, int n, float* out) const override {
     const map::DistanceField& field = *field_;
     if (trilinear_) {
@@ -30,13 +30,13 @@ class FieldDistanceQuery final : public matching::DistanceQuery {
   void Planes(const Eigen::Vector3f* points_map, int n, bool* out, Eigen::Vector3f* normals,
               float* offsets_m) const override {
     const map::DistanceField& field = *field_;
-    if (!neighbourhood_) {
+    if (!neighborhood_) {
       for (int i = 0; i < n; ++i) out[i] = field.PlaneAt(points_map[i], &normals[i], &offsets_m[i]);
       return;
     }
     for (int i = 0; i < n; ++i) {
-      const map::NeighbourhoodPlane plane = map::FitNeighbourhoodPlane(field, points_map[i], *neighbourhood_);
-      out[i] = plane.shape == map::NeighbourhoodShape::kPlanar;
+      const map::NeighborhoodPlane plane = map::FitNeighborhoodPlane(field, points_map[i], *neighborhood_);
+      out[i] = plane.shape == map::NeighborhoodShape::kPlanar;
       normals[i] = plane.normal_map;
       offsets_m[i] = plane.offset_m;
     }
@@ -51,7 +51,7 @@ class FieldDistanceQuery final : public matching::DistanceQuery {
  private:
   std::shared_ptr<const map::DistanceField> field_;
   bool trilinear_;
-  std::optional<map::NeighbourhoodPlaneOptions> neighbourhood_;
+  std::optional<map::NeighborhoodPlaneOptions> neighborhood_;
 };
 
 }  // namespace unimap::pipeline

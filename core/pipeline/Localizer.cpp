@@ -150,7 +150,7 @@ void Localizer::PredictTo(double t_end) {
     Skip(&stats_.scans_no_motion, "scan ending at " + std::to_string(t_end) + " s: " + prediction.reason +
                                       "; pose held with a wide prior");
     prediction.T_prev_next.setIdentity();
-    prediction.covariance = estimation::UnmodelledMotionCovariance(options_.motion, t_end - eskf_.state().time_s);
+    prediction.covariance = estimation::UnmodeledMotionCovariance(options_.motion, t_end - eskf_.state().time_s);
   }
   eskf_.PredictPose(t_end, prediction.T_prev_next, prediction.covariance);
 }

@@ -26,13 +26,13 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     *why = "reacquire: " + inner;
     return false;
   }
-  if (neighbourhood_planes) {
-    if (!neighbourhood_planes->IsValid(&inner)) {
-      *why = "neighbourhood_plane: " + inner;
+  if (neighborhood_planes) {
+    if (!neighborhood_planes->IsValid(&inner)) {
+      *why = "neighborhood_plane: " + inner;
       return false;
     }
     if (!gpf.point_to_plane) {
-      *why = "neighbourhood_planes needs gpf.point_to_plane";
+      *why = "neighborhood_planes needs gpf.point_to_plane";
       return false;
     }
   }
@@ -124,7 +124,7 @@ void LocalizerOptions::ClampFieldAtLikelihood() {
 }
 
 void LocalizerOptions::UsePlaneMatching() {
-  neighbourhood_planes = map::NeighbourhoodPlaneOptions{};
+  neighborhood_planes = map::NeighborhoodPlaneOptions{};
   gpf.point_to_plane = true;
   gpf.planes_only = true;
   // Planes are fitted across the measured stripes; filled gaps made them

@@ -7,7 +7,7 @@
 #include "estimation/StaticInitializer.hpp"
 #include "map/DistanceMapOptions.hpp"
 #include "map/LineGapFill.hpp"
-#include "map/NeighbourhoodPlane.hpp"
+#include "map/NeighborhoodPlane.hpp"
 #include "matching/GpfOptions.hpp"
 #include "pipeline/Reacquirer.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -38,9 +38,9 @@ struct LocalizerOptions {
   bool localize_only = false;       // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;  // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;   // GPF reads the distance map trilinearly (false: nearest voxel)
-  std::optional<map::NeighbourhoodPlaneOptions> neighbourhood_planes;  // set: point to plane with planes
+  std::optional<map::NeighborhoodPlaneOptions> neighborhood_planes;  // set: point to plane with planes
                                       // fitted to the map's surface cells around each point
-                                      // (FitNeighbourhoodPlane, these settings) instead of the field's
+                                      // (FitNeighborhoodPlane, these settings) instead of the field's
                                       // cell planes; needs gpf.point_to_plane
   std::optional<map::LineGapFillOptions> line_gap_fill = map::LineGapFillOptions{};  // set: line scans
                                       // also insert the surface between consecutive lines into the
@@ -56,7 +56,7 @@ struct LocalizerOptions {
   bool IsValid(std::string* why) const;
   // Plane matching (`unimap run --plane-matching`): every scan point is tied
   // to the plane fitted to the map's surface cells around it
-  // (neighbourhood_planes, gpf.point_to_plane) and points without one are
+  // (neighborhood_planes, gpf.point_to_plane) and points without one are
   // not measured (gpf.planes_only); no line gap fill. A rotating line
   // scanner's map is made of stripes; measured against the nearest stripe
   // instead of across the surface, a point beside it pulls the pose along

@@ -44,12 +44,12 @@ std::vector<LoopClosure> LoopClosureFinder::Search(int key_scan, const std::vect
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < eligible; ++i) {
     const Retired& r = retired_[i];
-    const double travelled_m = path_m - r.path_m;
-    if (travelled_m < search_.min_path_m) continue;
+    const double traveled_m = path_m - r.path_m;
+    if (traveled_m < search_.min_path_m) continue;
     Eigen::Isometry3d T_world_submap;
     if (!graph.T_world_submap(r.submap.id, &T_world_submap)) continue;
     const double radius_m =
-        std::min(search_.max_radius_m, search_.min_radius_m + search_.radius_per_path_m * travelled_m);
+        std::min(search_.max_radius_m, search_.min_radius_m + search_.radius_per_path_m * traveled_m);
     const double distance_m = (T_world_submap.translation() - T_world_body.translation()).norm();
     if (distance_m <= radius_m + search_.submap_reach_m) candidates.push_back({distance_m, i, radius_m, T_world_submap});
   }

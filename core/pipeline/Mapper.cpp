@@ -39,7 +39,7 @@ void Mapper::Note(const std::string& message) {
 
 void Mapper::AddImu(const ImuSample& sample) {
   localizer_->AddImu(sample);
-  PollOptimiser(false);
+  PollOptimizer(false);
 }
 
 void Mapper::AddEncoder(const EncoderSample& sample) { localizer_->AddEncoder(sample); }
@@ -50,11 +50,11 @@ void Mapper::AddOdometry(const OdometrySample& sample) { localizer_->AddOdometry
 
 void Mapper::Finish() {
   localizer_->Finish();
-  PollOptimiser(true);
+  PollOptimizer(true);
   if (any_closure_) {
     // The final trajectory and map come from a graph holding every constraint.
     optimizer_.Submit(graph_.graph());
-    PollOptimiser(true);
+    PollOptimizer(true);
   }
 }
 
@@ -113,26 +113,26 @@ void Mapper::OnKeyScan(KeyScan&& key) {
 
   // Every I 3D scans (once a loop closure exists: without one the graph,
   // built from a single trajectory, is already at its optimum).
-  if (any_closure_ && (k + 1) % options_.scans_3d_per_optimization == 0) SubmitOptimisation();
+  if (any_closure_ && (k + 1) % options_.scans_3d_per_optimization == 0) SubmitOptimization();
 }
 
-void Mapper::SubmitOptimisation() {
-  PollOptimiser(false);
+void Mapper::SubmitOptimization() {
+  PollOptimizer(false);
   optimizer_.Submit(graph_.graph());  // busy: the next submission carries these constraints
-  if (options_.wait_for_background) PollOptimiser(true);
+  if (options_.wait_for_background) PollOptimizer(true);
 }
 
-void Mapper::PollOptimiser(bool wait) {
+void Mapper::PollOptimizer(bool wait) {
   if (wait) optimizer_.Wait();
   std::optional<graph::OptimizedPoses> result = optimizer_.TakeResult();
   if (!result) return;
-  stats_.optimisation_s += result->summary.solve_s;
+  stats_.optimization_s += result->summary.solve_s;
   if (!result->summary.ok) {
-    ++stats_.optimisation_failures;
+    ++stats_.optimization_failures;
     Note("optimisation failed: " + result->summary.reason);
     return;
   }
-  ++stats_.optimisations;
+  ++stats_.optimizations;
   graph_.ApplyOptimized(result->T_world_node);
 }
 
@@ -164,7 +164,7 @@ std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
 StageTimes Mapper::Times() const {
   StageTimes times = localizer_->Times();
   times.loop_search_s = stats_.loop_search_s;
-  times.optimisation_s = stats_.optimisation_s;
+  times.optimization_s = stats_.optimization_s;
   return times;
 }
 

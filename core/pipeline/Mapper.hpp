@@ -26,9 +26,9 @@ struct MapperStats {
   int submaps = 0;                    // submaps started
   std::size_t retired_submaps = 0;    // submaps retired (kept for loop closure)
   std::size_t loop_closures = 0;      // accepted loop-closure constraints
-  std::size_t optimisations = 0;      // pose-graph optimisations finished and applied
-  std::size_t optimisation_failures = 0;  // optimisations that reported !ok (result ignored)
-  double optimisation_s = 0.0;        // total solver time
+  std::size_t optimizations = 0;      // pose-graph optimisations finished and applied
+  std::size_t optimization_failures = 0;  // optimisations that reported !ok (result ignored)
+  double optimization_s = 0.0;        // total solver time
   double loop_search_s = 0.0;         // total time searching and matching loop closures
   double first_loop_closure_time_s = -1.0;  // time of the 3D scan of the first accepted closure (-1: none)
   LoopSearchStats loop_search;        // candidate counts
@@ -89,8 +89,8 @@ class Mapper : public EventSink {
 
  private:
   void OnKeyScan(KeyScan&& key);
-  void SubmitOptimisation();
-  void PollOptimiser(bool wait);
+  void SubmitOptimization();
+  void PollOptimizer(bool wait);
   void Note(const std::string& message);
 
   MapperOptions options_;

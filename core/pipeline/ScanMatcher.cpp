@@ -23,7 +23,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
                                    const Eigen::Isometry3d& T_predicted,
                                    const matching::Matrix6d& predicted_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
-  const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighbourhood_planes);
+  const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighborhood_planes);
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
   const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
   // Points far from every mapped surface at the prediction look at what the

@@ -16,7 +16,7 @@ struct StageTimes {
   double map_distance_s = 0.0;     // distance-field updates
   double map_export_s = 0.0;       // publishing fields to the matcher
   double loop_search_s = 0.0;      // loop-closure candidates and matching
-  double optimisation_s = 0.0;     // pose-graph optimisation (background solver time)
+  double optimization_s = 0.0;     // pose-graph optimisation (background solver time)
   double outputs_s = 0.0;          // trajectories, map files, evaluation and report
 };
 

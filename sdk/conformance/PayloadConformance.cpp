@@ -30,7 +30,7 @@ std::vector<std::string>& MutablePluginPaths() {
 // An existing file becomes an absolute path (the loader then takes it as a
 // path whatever the working directory); anything else is left for the
 // loader to resolve as a payload name.
-std::string Normalise(const std::string& entry) {
+std::string Normalize(const std::string& entry) {
   std::error_code ec;
   if (std::filesystem::is_regular_file(entry, ec)) {
     return std::filesystem::absolute(entry, ec).lexically_normal().string();
@@ -95,7 +95,7 @@ int RunMain(int argc, char** argv, std::vector<std::string> default_plugins) {
   std::vector<std::string>& paths = MutablePluginPaths();
   paths.clear();
   for (const std::string& entry : chosen.empty() ? default_plugins : chosen) {
-    paths.push_back(Normalise(entry));
+    paths.push_back(Normalize(entry));
   }
   if (paths.empty()) {
     std::cerr << "unimap conformance: no plugin library given (use --plugin=PATH or "

@@ -22,7 +22,7 @@ std::vector<Eigen::Vector3d> TrajectoryViewpoints(const Trajectory& trajectory, 
   KinematicState state = trajectory.At(t0);
   viewpoints.push_back(state.position_m);
   Eigen::Vector3d previous = state.position_m;  // position at the previous step
-  double travelled = 0.0;                       // since the last travel viewpoint
+  double traveled = 0.0;                       // since the last travel viewpoint
   bool moving = state.velocity_m_s.norm() >= options.dwell_speed_m_s;
   auto add_if_apart = [&](const Eigen::Vector3d& p) {
     if ((p - viewpoints.back()).norm() > options.min_separation_m) viewpoints.push_back(p);
@@ -31,11 +31,11 @@ std::vector<Eigen::Vector3d> TrajectoryViewpoints(const Trajectory& trajectory, 
   for (long k = 1; k <= steps; ++k) {
     const double t = std::min(t1, t0 + static_cast<double>(k) * options.time_step_s);
     state = trajectory.At(t);
-    travelled += (state.position_m - previous).norm();
+    traveled += (state.position_m - previous).norm();
     previous = state.position_m;
-    if (travelled >= options.spacing_m) {
+    if (traveled >= options.spacing_m) {
       viewpoints.push_back(state.position_m);
-      travelled = 0.0;
+      traveled = 0.0;
     }
     const bool now_moving = state.velocity_m_s.norm() >= options.dwell_speed_m_s;
     if (moving && !now_moving) add_if_apart(state.position_m);  // a dwell begins

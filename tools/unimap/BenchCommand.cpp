@@ -99,7 +99,7 @@ std::vector<BenchmarkFigure> StageFigures(const pipeline::StageTimes& t, double 
       {"particle filter + refinement", t.match_s}, {"ESKF", t.eskf_s},
       {"map insertion (surfaces, occupancy, rays)", t.map_surface_s},
       {"distance-field update", t.map_distance_s}, {"field export", t.map_export_s},
-      {"loop-closure search", t.loop_search_s}, {"pose-graph optimisation", t.optimisation_s}};
+      {"loop-closure search", t.loop_search_s}, {"pose-graph optimisation", t.optimization_s}};
   std::vector<BenchmarkFigure> figures;
   for (const auto& [name, seconds] : stages) {
     figures.push_back({std::string("stage: ") + name,
@@ -112,7 +112,7 @@ std::vector<BenchmarkFigure> StageFigures(const pipeline::StageTimes& t, double 
 // Simulates a scenario with its default payload or the shipped platform
 // `payload` (not timed), then localises it with the full mapper (timed, on
 // the one pinned core, background threads included).
-std::vector<BenchmarkFigure> LocaliseScenario(const BenchOptions& options, const std::string& scenario_name,
+std::vector<BenchmarkFigure> LocalizeScenario(const BenchOptions& options, const std::string& scenario_name,
                                               const std::string& payload = "") {
   namespace fs = std::filesystem;
   const fs::path file = fs::path(options.configs) / "scenarios" / (scenario_name + ".yaml");
@@ -288,32 +288,32 @@ std::vector<BenchmarkCase> Cases() {
        "search) on the simulated tunnel with the rotating Hokuyo. Targets: real-time factor >= 3 (issue 4), "
        ">= 2 (issue 5) on one core; drift_percent <= 1.0, each rotation error <= 0.2 deg, max errors below the "
        "paper's 2.0 / 0.37 / 1.11 m, map error mean <= 0.05 m.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "tunnel"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "tunnel"); }},
       {"run: corridor loop, fixed VLP-16",
        "`unimap run` on the simulated corridor loop with the fixed VLP-16. Targets: real-time factor >= 2, at "
        "least one loop closure, ate_rmse_m <= 0.10, map error mean <= 0.05 m.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "corridor_loop"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "corridor_loop"); }},
       {"run: patio, rotating VLP-16",
        "`unimap run` on the simulated patio with the VLP-16 on a motor at 30 rpm (distance map 0.3 m, 40 m box). "
        "Targets: real-time factor >= 2, ate_rmse_m <= 0.15.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "patio"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "patio"); }},
       {"run: narrow hallway, rotating Hokuyo",
        "`unimap run` on the simulated 1.1 m-wide hallway loop walked at 0.5 m/s with the rotating Hokuyo. "
        "Targets: real-time factor >= 2, ate_rmse_m <= 0.10.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "narrow_hallway"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "narrow_hallway"); }},
       {"run: patio, fixed VLP-16 (robustness matrix)",
        "The robustness matrix's slowest pair (docs/robustness.md): `unimap run` with the fixed VLP-16's platform "
        "file (0.1 m map) on the simulated patio. Target (issue 20): real-time factor >= 5.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "patio", "fixed_vlp16"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "patio", "fixed_vlp16"); }},
       {"run: patio, rotating Hokuyo (robustness matrix)",
        "The robustness matrix's second slowest pair: `unimap run` with the rotating Hokuyo's platform file on the "
        "simulated patio. Target (issue 20): real-time factor >= 5.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "patio", "rotating_hokuyo"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "patio", "rotating_hokuyo"); }},
       {"run: tunnel, fixed VLP-16 (robustness matrix)",
        "The robustness matrix's third slowest pair: `unimap run` with the fixed VLP-16's platform file on the "
        "simulated tunnel (its dataset takes about 5 GB of temporary space while it runs). Target (issue 20): "
        "real-time factor >= 5.",
-       [](const BenchOptions& o) { return LocaliseScenario(o, "tunnel", "fixed_vlp16"); }},
+       [](const BenchOptions& o) { return LocalizeScenario(o, "tunnel", "fixed_vlp16"); }},
       {"run: KITTI 00 frames 0-15, HDL-64, beside KISS-ICP",
        "`unimap convert` and `unimap run --platform configs/platforms/kitti_hdl64.yaml` on the real KITTI 00 sweeps "
        "0-15 (../shared/data/kitti00, 120k points each, no IMU: constant-velocity prior), and KISS-ICP's C++ core "

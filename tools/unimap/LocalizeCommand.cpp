@@ -118,15 +118,15 @@ void CheckMapFile(const std::filesystem::path& file) {
   }
 }
 
-// The prior map, boxed around centre_map (*whole_map: one fixed box holds all
+// The prior map, boxed around center_map (*whole_map: one fixed box holds all
 // of it); throws InputError naming the file.
 std::unique_ptr<map::DistanceMap> LoadMap(const std::filesystem::path& file, const map::DistanceMapOptions& options,
-                                          const Eigen::Vector3f& centre_map, std::size_t* points, bool* whole_map) {
+                                          const Eigen::Vector3f& center_map, std::size_t* points, bool* whole_map) {
   CheckMapFile(file);
   *whole_map = false;
   if (file.extension() == ".bt") {
     *points = 0;
-    return map::DistanceMap::LoadBt(file, options, centre_map);
+    return map::DistanceMap::LoadBt(file, options, center_map);
   }
   std::vector<Eigen::Vector3f> points_map = LoadMapPoints(file);
   points_map.erase(std::remove_if(points_map.begin(), points_map.end(),
@@ -137,9 +137,9 @@ std::unique_ptr<map::DistanceMap> LoadMap(const std::filesystem::path& file, con
   // A map that fits the cell budget gets one fixed distance box, computed
   // once (rotating Hokuyo, 60 s of tunnel: real-time factor 0.73 with a box
   // that follows the sensor and is recomputed on every recentring).
-  const std::optional<map::DistanceMapOptions> whole = map::WholeMapOptions(points_map, options, centre_map);
+  const std::optional<map::DistanceMapOptions> whole = map::WholeMapOptions(points_map, options, center_map);
   *whole_map = whole.has_value();
-  return map::DistanceMap::FromPoints(points_map, whole.value_or(options), centre_map);
+  return map::DistanceMap::FromPoints(points_map, whole.value_or(options), center_map);
 }
 
 int RunLocalize(const LocalizeCliOptions& options) {

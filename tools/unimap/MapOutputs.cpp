@@ -80,9 +80,9 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["submaps"] = static_cast<std::size_t>(s.submaps);
   o["retired_submaps"] = s.retired_submaps;
   o["loop_closures"] = s.loop_closures;
-  o["optimisations"] = s.optimisations;
-  o["optimisation_failures"] = s.optimisation_failures;
-  o["optimisation_s"] = s.optimisation_s;
+  o["optimisations"] = s.optimizations;
+  o["optimisation_failures"] = s.optimization_failures;
+  o["optimisation_s"] = s.optimization_s;
   o["key_scan_points"] = s.key_scan_points;
   o["map_points_kept"] = s.map_points_kept;
   o["loop_searches"] = s.loop_search.searches;

@@ -95,7 +95,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       }
     }
     std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, "
-              << stats.loop_closures << " loop closures, " << stats.optimisations << " optimisations\n";
+              << stats.loop_closures << " loop closures, " << stats.optimizations << " optimisations\n";
     return WriteRunOutputs(outputs);
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -106,7 +106,7 @@ Json StageTimesJson(const pipeline::StageTimes& t, double processing_s, bool pri
       {"match_s", t.match_s},             {"eskf_s", t.eskf_s},
       {"map_surface_s", t.map_surface_s}, {"map_distance_s", t.map_distance_s},
       {"map_export_s", t.map_export_s},   {"loop_search_s", t.loop_search_s},
-      {"optimisation_s", t.optimisation_s}, {"outputs_s", t.outputs_s}};
+      {"optimisation_s", t.optimization_s}, {"outputs_s", t.outputs_s}};
   Json o = Json::object();
   std::string line = "stages (s):";
   for (const auto& [key, seconds] : stages) {

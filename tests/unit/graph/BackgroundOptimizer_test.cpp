@@ -60,7 +60,7 @@ PoseGraph GraphWithNodes(int n) {
   return graph;
 }
 
-TEST(BackgroundOptimizer, ResultEqualsTheSynchronousOptimisation) {
+TEST(BackgroundOptimizer, ResultEqualsTheSynchronousOptimization) {
   const std::vector<Eigen::Isometry3d> truth = CircleTruth(36);
   const PoseGraph graph = NoisyLoopGraph(truth, /*odometry_noise=*/true, /*seed=*/42);
   PoseGraph synchronous = graph;

@@ -37,17 +37,17 @@ TEST(LoopClosureDistanceFieldTest, CellsHoldTheDistanceToTheNearestPointUpToTheC
   for (int x = 0; x < 40; ++x) {
     for (int y = 0; y < 40; ++y) {
       for (int z = 0; z < 20; z += 3) {
-        const Eigen::Vector3f centre =
+        const Eigen::Vector3f center =
             origin + (Eigen::Vector3i(x, y, z).cast<float>() + Eigen::Vector3f::Constant(0.5f)) * 0.1f;
-        const float truth = std::min(static_cast<float>(clamp), NearestDistance(points, centre));
+        const float truth = std::min(static_cast<float>(clamp), NearestDistance(points, center));
         ASSERT_NEAR(field.CellDistance(x, y, z), truth, clamp / 255.0 * 0.5 + 1e-5) << x << " " << y << " " << z;
         near_cells += truth < clamp ? 1 : 0;
         Eigen::Vector3f nearest;
         Eigen::Vector3f normal;
-        const bool found = field.NearestPoint(centre, &nearest, &normal);
+        const bool found = field.NearestPoint(center, &nearest, &normal);
         EXPECT_EQ(found, truth < clamp);
         if (found) {
-          EXPECT_NEAR((nearest - centre).norm(), truth, 1e-5);
+          EXPECT_NEAR((nearest - center).norm(), truth, 1e-5);
         }
       }
     }

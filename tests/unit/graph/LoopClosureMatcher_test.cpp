@@ -85,7 +85,7 @@ const LoopClosureMatcher* HallTest::matcher_ = nullptr;
 
 const Eigen::Isometry3d kHallWorldBody = Pose(8.0, 5.5, 1.2, 1.0 * kDeg, -0.5 * kDeg, 20.0 * kDeg);
 
-TEST_F(HallTest, RecoversAScanFromMetresAndDegreesOff) {
+TEST_F(HallTest, RecoversAScanFromMetersAndDegreesOff) {
   const Eigen::Isometry3d truth = kTWorldSubmap.inverse() * kHallWorldBody;
   const Eigen::Isometry3d guess = Perturbed(truth, 2.2, -1.6, 0.25, 0.6 * kDeg, 10.0 * kDeg);
   const auto scan = Scan(test::DistinctiveHall(), kHallWorldBody, 20.0f);

@@ -29,7 +29,7 @@ std::vector<Eigen::Vector3f> Scan(const test::Scene& scene, const Eigen::Isometr
   return matching::VoxelDownsample(test::SimulateScan(scene, T_world_body, range_m), 0.1, 2000, 1);
 }
 
-TEST(LoopClosureRefinerTest, ConvergesFromDecimetresAndDegreesOff) {
+TEST(LoopClosureRefinerTest, ConvergesFromDecimetersAndDegreesOff) {
   const World world(test::DistinctiveHall());
   const Eigen::Isometry3d truth = test::Pose(8.0, 5.5, 1.2, 1.0 * kDeg, -0.5 * kDeg, 20.0 * kDeg);
   const auto scan = Scan(test::DistinctiveHall(), truth, 20.0f);

@@ -25,8 +25,8 @@ DistanceField LinearField() {
   for (int x = 0; x < kDims.x(); ++x) {
     for (int y = 0; y < kDims.y(); ++y) {
       for (int z = 0; z < kDims.z(); ++z) {
-        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
-        cells.push_back(DistanceField::Quantise(Linear(centre), kClamp));
+        const V3 center = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::Quantise(Linear(center), kClamp));
       }
     }
   }
@@ -39,12 +39,12 @@ TEST(DistanceField, LookupReturnsTheValueOfTheVoxelContainingThePoint) {
   for (int x = 0; x < kDims.x(); ++x) {
     for (int y = 0; y < kDims.y(); ++y) {
       for (int z = 0; z < kDims.z(); ++z) {
-        const V3 centre = field.CellCentre(Eigen::Vector3i(x, y, z));
+        const V3 center = field.CellCenter(Eigen::Vector3i(x, y, z));
         // Anywhere inside the voxel, not only at its centre.
-        const V3 corner = centre + V3(0.24f, -0.24f, 0.2f);
-        EXPECT_NEAR(field.Distance(centre), Linear(centre), step);
-        EXPECT_NEAR(field.Distance(corner), Linear(centre), step);
-        EXPECT_NEAR(field.CellDistance(Eigen::Vector3i(x, y, z)), Linear(centre), step);
+        const V3 corner = center + V3(0.24f, -0.24f, 0.2f);
+        EXPECT_NEAR(field.Distance(center), Linear(center), step);
+        EXPECT_NEAR(field.Distance(corner), Linear(center), step);
+        EXPECT_NEAR(field.CellDistance(Eigen::Vector3i(x, y, z)), Linear(center), step);
       }
     }
   }
@@ -111,8 +111,8 @@ DistanceField SignedField(float (*value)(const V3&)) {
   for (int x = 0; x < kDims.x(); ++x) {
     for (int y = 0; y < kDims.y(); ++y) {
       for (int z = 0; z < kDims.z(); ++z) {
-        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
-        cells.push_back(DistanceField::QuantiseSigned(value(centre), kClamp));
+        const V3 center = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::QuantiseSigned(value(center), kClamp));
       }
     }
   }
@@ -134,15 +134,15 @@ TEST(DistanceField, SignedQuantisationCoversPlusMinusTheClampIn15Bits) {
   EXPECT_EQ(LinearField().encoding(), DistanceField::Encoding::kUnsigned);
   for (int z = 0; z < kDims.z(); ++z) {
     const Eigen::Vector3i cell(1, 2, z);
-    const float truth = Plane(field.CellCentre(cell));
+    const float truth = Plane(field.CellCenter(cell));
     EXPECT_NEAR(field.CellValue(cell), truth, step);
     EXPECT_NEAR(field.CellDistance(cell), std::abs(truth), step);
-    EXPECT_NEAR(field.Distance(field.CellCentre(cell)), std::abs(truth), step);
+    EXPECT_NEAR(field.Distance(field.CellCenter(cell)), std::abs(truth), step);
   }
   EXPECT_FLOAT_EQ(field.CellValue(Eigen::Vector3i(0, 0, -1)), kClamp);  // outside
 }
 
-TEST(DistanceField, SignedTrilinearReadsZeroOnTheSurfaceBetweenCentres) {
+TEST(DistanceField, SignedTrilinearReadsZeroOnTheSurfaceBetweenCenters) {
   const DistanceField field = SignedField(Plane);
   for (const V3& p : {V3(-0.6f, 0.4f, 3.1f), V3(0.1f, 1.6f, 2.9f), V3(-0.3f, 1.0f, 3.3f),
                       V3(-0.3f, 1.1f, 3.6f)}) {
@@ -159,8 +159,8 @@ TEST(DistanceField, SignedTrilinearReadsZeroOnTheSurfaceBetweenCentres) {
   for (int x = 0; x < kDims.x(); ++x) {
     for (int y = 0; y < kDims.y(); ++y) {
       for (int z = 0; z < kDims.z(); ++z) {
-        const V3 centre = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
-        cells.push_back(DistanceField::Quantise(std::abs(Plane(centre)), kClamp));
+        const V3 center = kOrigin + (Eigen::Vector3i(x, y, z).cast<float>().array() + 0.5f).matrix() * 0.5f;
+        cells.push_back(DistanceField::Quantise(std::abs(Plane(center)), kClamp));
       }
     }
   }
@@ -214,8 +214,8 @@ DistanceField TwoBlockField() {
     for (int x = 0; x < kEdge; ++x) {
       for (int y = 0; y < kEdge; ++y) {
         for (int z = 0; z < kEdge; ++z) {
-          const V3 centre = ((first + Eigen::Vector3i(x, y, z)).cast<float>().array() + 0.5f).matrix() * 0.1f;
-          (*block)[DistanceField::BlockOffset(x, y, z)] = DistanceField::Quantise(0.01f + 0.02f * centre.norm(), 0.5f);
+          const V3 center = ((first + Eigen::Vector3i(x, y, z)).cast<float>().array() + 0.5f).matrix() * 0.1f;
+          (*block)[DistanceField::BlockOffset(x, y, z)] = DistanceField::Quantise(0.01f + 0.02f * center.norm(), 0.5f);
         }
       }
     }

@@ -19,11 +19,11 @@ namespace {
 
 using test::Append;
 using test::BruteForceDistance;
-using test::MaxVoxelCentreError;
+using test::MaxVoxelCenterError;
 using test::RandomPoints;
 using test::SampleBoxSurface;
 using test::SampleRectangle;
-using test::VoxelCentreOf;
+using test::VoxelCenterOf;
 using V3 = Eigen::Vector3f;
 
 constexpr float kRes = 0.2f;  // all test surfaces lie on voxel centres (odd multiples of 0.1 m)
@@ -48,13 +48,13 @@ void ExpectMatchesBruteForce(const DistanceMap& map, std::uint32_t seed, const V
                              const V3& high) {
   const std::shared_ptr<const DistanceField> field = map.Snapshot();
   const std::vector<V3> occupied =
-      test::CentresNear(map.OccupiedVoxelCentres(), low, high, field->clamp());
+      test::CentersNear(map.OccupiedVoxelCenters(), low, high, field->clamp());
   ASSERT_FALSE(occupied.empty());
   const std::vector<V3> queries = RandomPoints(low, high, 2000, seed);
-  EXPECT_LE(MaxVoxelCentreError(*field, occupied, queries), 0.5f * kRes);
+  EXPECT_LE(MaxVoxelCenterError(*field, occupied, queries), 0.5f * kRes);
   for (const V3& p : queries) {
     const float truth = BruteForceDistance(occupied, p, field->clamp());
-    const float slack = 0.5f * kRes + (p - VoxelCentreOf(*field, p)).norm() + 1e-4f;
+    const float slack = 0.5f * kRes + (p - VoxelCenterOf(*field, p)).norm() + 1e-4f;
     ASSERT_LE(std::abs(field->Distance(p) - truth), slack) << p.transpose();
   }
 }
@@ -136,7 +136,7 @@ TEST(DistanceMap, SnapshotDoesNotWaitForAnUpdateInProgress) {
 // corridor's cross-section, and the distances stay exact in each new box.
 TEST(DistanceMap, BoxFollowsTheSensorAndStaysClippedToTheCorridor) {
   DistanceMapOptions options = TestOptions();
-  options.recentre_fraction = 0.25;  // 1.5 m
+  options.recenter_fraction = 0.25;  // 1.5 m
   DistanceMap map(options);
   V3 sensor(0.1f, 0.1f, 0.1f);
   for (int step = 0; step <= 12; ++step) {
@@ -191,7 +191,7 @@ void ExpectFreeSpaceRaysRemoveAVanishedObstacle(bool clear_occupied_only) {
   const std::shared_ptr<const DistanceField> field = map.Snapshot();
   EXPECT_FLOAT_EQ(field->Distance(on_old_wall), field->clamp());  // far wall is 2 m away
   EXPECT_NEAR(field->Distance(V3(3.5f, 0.1f, 0.1f)), 0.6f, 1e-3f);
-  for (const V3& c : map.OccupiedVoxelCentres()) EXPECT_GT(c.x(), 4.0f) << c.transpose();
+  for (const V3& c : map.OccupiedVoxelCenters()) EXPECT_GT(c.x(), 4.0f) << c.transpose();
   EXPECT_EQ(map.Stats().rebuilds, 1u);
   ExpectMatchesBruteForce(map, 5, field->origin(), field->box_max());
 }

@@ -24,7 +24,7 @@ float MaxCellError(const DistanceField& field, const std::vector<V3>& occupied) 
     for (int y = 0; y < field.dims().y(); ++y) {
       for (int z = 0; z < field.dims().z(); ++z) {
         const V3i cell(x, y, z);
-        const float truth = test::BruteForceDistance(occupied, field.CellCentre(cell), kClamp);
+        const float truth = test::BruteForceDistance(occupied, field.CellCenter(cell), kClamp);
         worst = std::max(worst, std::abs(field.CellDistance(cell) - truth));
       }
     }
@@ -58,7 +58,7 @@ class EdtRegionTest : public ::testing::Test {
     options.clamp_distance_m = kClamp;
     return options;
   }
-  std::vector<V3> OccupiedCentres() const { return tree_.OccupiedVoxelCentres(); }
+  std::vector<V3> OccupiedCenters() const { return tree_.OccupiedVoxelCenters(); }
 
   OccupancyTree tree_;
   std::vector<V3> obstacles_;
@@ -70,8 +70,8 @@ TEST_F(EdtRegionTest, InitialTransformMatchesBruteForceInEveryCell) {
   const std::shared_ptr<const DistanceField> field = region.Export(3);
   EXPECT_EQ(field->dims(), V3i(31, 31, 31));
   EXPECT_EQ(field->sequence(), 3u);
-  EXPECT_EQ(OccupiedCentres().size(), 33u);  // 25 voxels + the pruned block of 8
-  EXPECT_LE(MaxCellError(*field, OccupiedCentres()), 0.05f);
+  EXPECT_EQ(OccupiedCenters().size(), 33u);  // 25 voxels + the pruned block of 8
+  EXPECT_LE(MaxCellError(*field, OccupiedCenters()), 0.05f);
   // Field cells line up with octree voxels: each obstacle's voxel reads zero.
   for (const V3& p : obstacles_) EXPECT_FLOAT_EQ(field->Distance(p), 0.0f) << p.transpose();
 }
@@ -85,7 +85,7 @@ TEST_F(EdtRegionTest, IncrementalUpdateFollowsAddedAndFreedVoxels) {
   SetOccupancy(tree_.tree(), V3(9.0f, 9.0f, 9.0f), true);  // outside the box: ignored
   region.Update();
   const std::shared_ptr<const DistanceField> field = region.Export(4);
-  std::vector<V3> occupied = OccupiedCentres();
+  std::vector<V3> occupied = OccupiedCenters();
   EXPECT_EQ(occupied.size(), 33u - 2u + 2u);
   occupied.erase(std::remove_if(occupied.begin(), occupied.end(),
                                 [](const V3& c) { return c.x() > 5.0f; }),

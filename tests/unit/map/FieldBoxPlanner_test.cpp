@@ -12,7 +12,7 @@ DistanceMapOptions Options() {
   options.resolution_m = 0.1;
   options.max_range_m = 15.0;
   options.clamp_distance_m = 1.0;
-  options.recentre_fraction = 0.25;
+  options.recenter_fraction = 0.25;
   options.growth_margin_m = 0.5;
   return options;
 }
@@ -29,37 +29,37 @@ TEST(FieldBoxPlanner, SensorBoxSpansMaxRangeEachWay) {
 // the field spans 30 m along x but only the cross-section plus the clamp.
 TEST(FieldBoxPlanner, FieldBoxIsClippedToTheOccupiedExtent) {
   const FieldBoxPlanner planner(Options(), 0.1);
-  const V3i centre(0, 0, 0);
-  const KeyBox sensor = planner.SensorBox(centre);
+  const V3i center(0, 0, 0);
+  const KeyBox sensor = planner.SensorBox(center);
   const KeyBox tunnel(V3i(-400, -29, -10), V3i(400, 28, 59));
   bool shrunk = false;
-  const KeyBox field = planner.FieldBox(tunnel.Intersection(sensor), sensor, centre, &shrunk);
+  const KeyBox field = planner.FieldBox(tunnel.Intersection(sensor), sensor, center, &shrunk);
   EXPECT_FALSE(shrunk);
   EXPECT_EQ(field, KeyBox(V3i(-150, -39, -20), V3i(150, 38, 69)));
   EXPECT_EQ(field.CellCount(), 301u * 78u * 90u);
-  EXPECT_TRUE(planner.FieldBox(KeyBox(), sensor, centre, nullptr).IsEmpty());
+  EXPECT_TRUE(planner.FieldBox(KeyBox(), sensor, center, nullptr).IsEmpty());
 }
 
-TEST(FieldBoxPlanner, OversizedBoxesShrinkAboutTheCentre) {
+TEST(FieldBoxPlanner, OversizedBoxesShrinkAboutTheCenter) {
   DistanceMapOptions options = Options();
   options.max_edt_cells = 1000000;
   const FieldBoxPlanner planner(options, 0.1);
-  const V3i centre(5, 5, 5);
-  const KeyBox sensor = planner.SensorBox(centre);
+  const V3i center(5, 5, 5);
+  const KeyBox sensor = planner.SensorBox(center);
   bool shrunk = false;
-  const KeyBox field = planner.FieldBox(sensor, sensor, centre, &shrunk);
+  const KeyBox field = planner.FieldBox(sensor, sensor, center, &shrunk);
   EXPECT_TRUE(shrunk);
   EXPECT_LE(field.CellCount(), 1000000u);
   EXPECT_GT(field.CellCount(), 500000u);
-  EXPECT_TRUE(field.Contains(centre));
-  EXPECT_EQ(field.max() - centre, centre - field.min());
+  EXPECT_TRUE(field.Contains(center));
+  EXPECT_EQ(field.max() - center, center - field.min());
 }
 
-TEST(FieldBoxPlanner, RecentreWhenTheSensorLeavesTheCentralRegion) {
+TEST(FieldBoxPlanner, RecenterWhenTheSensorLeavesTheCentralRegion) {
   const FieldBoxPlanner planner(Options(), 0.1);  // threshold 3.75 m = 37.5 voxels
-  EXPECT_FALSE(planner.NeedsRecentre(V3i(0, 0, 0), V3i(37, -37, 37)));
-  EXPECT_TRUE(planner.NeedsRecentre(V3i(0, 0, 0), V3i(0, 38, 0)));
-  EXPECT_TRUE(planner.NeedsRecentre(V3i(100, 0, 0), V3i(62, 0, 0)));
+  EXPECT_FALSE(planner.NeedsRecenter(V3i(0, 0, 0), V3i(37, -37, 37)));
+  EXPECT_TRUE(planner.NeedsRecenter(V3i(0, 0, 0), V3i(0, 38, 0)));
+  EXPECT_TRUE(planner.NeedsRecenter(V3i(100, 0, 0), V3i(62, 0, 0)));
 }
 
 TEST(FieldBoxPlanner, OccupiedExtentGrowsWithMarginOnlyForNewEndpoints) {

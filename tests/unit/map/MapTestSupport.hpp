@@ -58,13 +58,13 @@ inline void Append(std::vector<Eigen::Vector3f>* to, const std::vector<Eigen::Ve
 }
 
 // Distance from p to the nearest of centres, clamped at clamp_m.
-inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centres,
+inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centers,
                                 const Eigen::Vector3f& p, float clamp_m) {
   float best_sq = clamp_m * clamp_m;
   const float px = p.x();
   const float py = p.y();
   const float pz = p.z();
-  for (const Eigen::Vector3f& c : centres) {  // plain arithmetic: fast in debug builds too
+  for (const Eigen::Vector3f& c : centers) {  // plain arithmetic: fast in debug builds too
     const float dx = c.x() - px;
     const float dy = c.y() - py;
     const float dz = c.z() - pz;
@@ -74,11 +74,11 @@ inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centres,
 }
 
 // The centres that can lie within clamp_m of the box [low, high].
-inline std::vector<Eigen::Vector3f> CentresNear(const std::vector<Eigen::Vector3f>& centres,
+inline std::vector<Eigen::Vector3f> CentersNear(const std::vector<Eigen::Vector3f>& centers,
                                                 const Eigen::Vector3f& low,
                                                 const Eigen::Vector3f& high, float clamp_m) {
   std::vector<Eigen::Vector3f> near;
-  for (const Eigen::Vector3f& c : centres) {
+  for (const Eigen::Vector3f& c : centers) {
     if ((c.array() >= low.array() - clamp_m).all() && (c.array() <= high.array() + clamp_m).all()) {
       near.push_back(c);
     }
@@ -87,10 +87,10 @@ inline std::vector<Eigen::Vector3f> CentresNear(const std::vector<Eigen::Vector3
 }
 
 // Centre of the field voxel containing p (p inside the field's box).
-inline Eigen::Vector3f VoxelCentreOf(const DistanceField& field, const Eigen::Vector3f& p) {
+inline Eigen::Vector3f VoxelCenterOf(const DistanceField& field, const Eigen::Vector3f& p) {
   const Eigen::Vector3f f = (p - field.origin()) / field.resolution();
   const Eigen::Vector3i cell = f.array().floor().cast<int>();
-  return field.CellCentre(cell.cwiseMax(0).cwiseMin(field.dims() - Eigen::Vector3i::Ones()));
+  return field.CellCenter(cell.cwiseMax(0).cwiseMin(field.dims() - Eigen::Vector3i::Ones()));
 }
 
 // Uniform random points in [low, high].
@@ -108,12 +108,12 @@ inline std::vector<Eigen::Vector3f> RandomPoints(const Eigen::Vector3f& low,
 
 // Largest |field - brute force| over queries, the brute force evaluated at
 // the centre of each query's voxel (what the field stores).
-inline float MaxVoxelCentreError(const DistanceField& field,
-                                 const std::vector<Eigen::Vector3f>& occupied_centres,
+inline float MaxVoxelCenterError(const DistanceField& field,
+                                 const std::vector<Eigen::Vector3f>& occupied_centers,
                                  const std::vector<Eigen::Vector3f>& queries) {
   float worst = 0.0f;
   for (const Eigen::Vector3f& p : queries) {
-    const float truth = BruteForceDistance(occupied_centres, VoxelCentreOf(field, p), field.clamp());
+    const float truth = BruteForceDistance(occupied_centers, VoxelCenterOf(field, p), field.clamp());
     worst = std::max(worst, std::abs(field.Distance(p) - truth));
   }
   return worst;

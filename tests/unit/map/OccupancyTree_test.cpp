@@ -18,8 +18,8 @@ DistanceMapOptions Options() {
 }
 
 bool IsOccupied(const OccupancyTree& tree, const V3& p) {
-  const std::vector<V3> centres = tree.OccupiedVoxelCentres();
-  return std::any_of(centres.begin(), centres.end(),
+  const std::vector<V3> centers = tree.OccupiedVoxelCenters();
+  return std::any_of(centers.begin(), centers.end(),
                      [&](const V3& c) { return (c - p).cwiseAbs().maxCoeff() < 0.01f; });
 }
 
@@ -32,8 +32,8 @@ TEST(OccupancyTree, HitsWithinRangeAreOccupiedAndBoxed) {
   EXPECT_EQ(hits, KeyBox(tree.KeyOf(V3(0.05f, -2.05f, 0.05f)), tree.KeyOf(V3(3.05f, 0.05f, 1.05f))));
   EXPECT_TRUE(IsOccupied(tree, V3(3.05f, 0.05f, 0.05f)));
   EXPECT_TRUE(IsOccupied(tree, V3(0.05f, -2.05f, 1.05f)));
-  EXPECT_EQ(tree.OccupiedVoxelCentres().size(), 2u);
-  EXPECT_TRUE(tree.KeyCentre(tree.KeyOf(V3(3.01f, 0.09f, 0.0f))).isApprox(V3(3.05f, 0.05f, 0.05f)));
+  EXPECT_EQ(tree.OccupiedVoxelCenters().size(), 2u);
+  EXPECT_TRUE(tree.KeyCenter(tree.KeyOf(V3(3.01f, 0.09f, 0.0f))).isApprox(V3(3.05f, 0.05f, 0.05f)));
 }
 
 TEST(OccupancyTree, RaysLowerOccupiedVoxelsButNotThoseHitInTheSameScan) {
@@ -75,7 +75,7 @@ TEST(OccupancyTree, WithoutRayCastingReturnsOnlyAdd) {
   for (int i = 0; i < 8; ++i) tree.Insert({V3(4.05f, 0.05f, 0.05f)}, origin);
   EXPECT_TRUE(IsOccupied(tree, V3(2.05f, 0.05f, 0.05f)));
   tree.MarkOccupied({V3(-1.05f, 0.05f, 0.05f)});
-  EXPECT_EQ(tree.OccupiedVoxelCentres().size(), 3u);
+  EXPECT_EQ(tree.OccupiedVoxelCenters().size(), 3u);
 }
 
 }  // namespace

@@ -115,7 +115,7 @@ TEST(DistanceMapDeferredTest, DistancesStartOnlyWhenEnabled) {
   map.InsertScan(Wall(), V3::Zero());
   map.WaitForUpdates();
   EXPECT_EQ(map.Snapshot()->CellCount(), 0u);       // the octree only
-  EXPECT_FALSE(map.OccupiedVoxelCentres().empty());
+  EXPECT_FALSE(map.OccupiedVoxelCenters().empty());
   map.EnableDistances();
   map.WaitForUpdates();
   const std::shared_ptr<const DistanceField> field = map.Snapshot();

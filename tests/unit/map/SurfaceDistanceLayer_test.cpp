@@ -41,10 +41,10 @@ bool NearestVoxelDistance(const SurfaceDistanceLayer& layer, const V3& p, float*
   float best_sq = 1e9f, second_sq = 1e9f;
   const SurfacePoints::Element* best = nullptr;
   layer.surfaces().ForEach([&](std::uint64_t key, const SurfacePoints::Element& e) {
-    const V3 centre((static_cast<float>((key >> 32) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
+    const V3 center((static_cast<float>((key >> 32) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
                     (static_cast<float>((key >> 16) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
                     (static_cast<float>(key & 0xffff) - 32768.0f + 0.5f) * 0.1f);
-    const float sq = (centre - p).squaredNorm();
+    const float sq = (center - p).squaredNorm();
     if (sq < best_sq) {
       second_sq = best_sq;
       best_sq = sq;
@@ -146,8 +146,8 @@ TEST(SurfaceDistanceLayer, PointsOutsideTheKeyRangeAreDroppedAndCounted) {
   layer.Insert({V3(1e5f, 0.0f, 0.0f), V3(0.0f, std::nanf(""), 0.0f), V3(0.5f, 0.5f, 0.5f)}, V3::Zero());
   EXPECT_EQ(layer.counts().points_added, 1u);
   EXPECT_EQ(layer.counts().points_out_of_range, 2u);
-  EXPECT_EQ(layer.VoxelCentres().size(), 1u);
-  EXPECT_TRUE(layer.VoxelCentres().front().isApprox(V3(0.55f, 0.55f, 0.55f)));
+  EXPECT_EQ(layer.VoxelCenters().size(), 1u);
+  EXPECT_TRUE(layer.VoxelCenters().front().isApprox(V3(0.55f, 0.55f, 0.55f)));
 }
 
 // Returns on a patch of floor z = 0.03 over x in [x0, x1], |y| <= 0.5.

@@ -23,14 +23,14 @@ constexpr float kRes = 0.1f;
 
 // Uniform random points on the square of half-size half_m about centre in
 // the plane with unit normal (fixed seed).
-std::vector<V3> SamplePlane(const V3& centre, const V3& normal, float half_m, int count,
+std::vector<V3> SamplePlane(const V3& center, const V3& normal, float half_m, int count,
                             std::uint32_t seed) {
   const V3 u = normal.unitOrthogonal();
   const V3 v = normal.cross(u);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> coord(-half_m, half_m);
   std::vector<V3> points(static_cast<std::size_t>(count));
-  for (V3& p : points) p = centre + coord(rng) * u + coord(rng) * v;
+  for (V3& p : points) p = center + coord(rng) * u + coord(rng) * v;
   return points;
 }
 
@@ -45,18 +45,18 @@ DistanceMapOptions PlaneOptions(bool subvoxel, bool signed_surfaces = true) {
 }
 
 // The published field after one scan of the plane seen from sensor.
-std::shared_ptr<const DistanceField> PlaneField(bool subvoxel, const V3& centre, const V3& normal,
+std::shared_ptr<const DistanceField> PlaneField(bool subvoxel, const V3& center, const V3& normal,
                                                 const V3& sensor, bool signed_surfaces = true) {
   DistanceMap map(PlaneOptions(subvoxel, signed_surfaces));
-  map.InsertScan(SamplePlane(centre, normal, 2.0f, 40000, 11), sensor);
+  map.InsertScan(SamplePlane(center, normal, 2.0f, 40000, 11), sensor);
   map.WaitForUpdates();
   return map.Snapshot();
 }
 
 // Largest trilinear distance at random points on the plane within 1.2 m of centre.
-float MaxOnPlane(const DistanceField& field, const V3& centre, const V3& normal) {
+float MaxOnPlane(const DistanceField& field, const V3& center, const V3& normal) {
   float worst = 0.0f;
-  for (const V3& p : SamplePlane(centre, normal, 1.2f, 500, 5)) {
+  for (const V3& p : SamplePlane(center, normal, 1.2f, 500, 5)) {
     worst = std::max(worst, field.DistanceTrilinear(p, nullptr));
   }
   return worst;
@@ -81,23 +81,23 @@ float ArgminAlongNormal(const DistanceField& field, const V3& foot, const V3& no
 TEST(SurfacePoints, MeanFollowsTheReturnsThenForgetsExponentially) {
   SurfacePoints surfaces(kRes);
   const std::uint64_t key = SurfacePoints::Pack(Eigen::Vector3i(1, 2, 3));
-  const V3 centre(0.05f, 0.05f, 0.05f);
+  const V3 center(0.05f, 0.05f, 0.05f);
   EXPECT_EQ(surfaces.Find(key), nullptr);
-  surfaces.Add(key, centre, V3(0.02f, 0.05f, 0.08f), nullptr);
+  surfaces.Add(key, center, V3(0.02f, 0.05f, 0.08f), nullptr);
   EXPECT_EQ(surfaces.Find(key), nullptr);  // not refreshed yet
-  surfaces.Add(key, centre, V3(0.04f, 0.07f, 0.06f), nullptr);
-  surfaces.Refresh(key, centre);
+  surfaces.Add(key, center, V3(0.04f, 0.07f, 0.06f), nullptr);
+  surfaces.Refresh(key, center);
   ASSERT_NE(surfaces.Find(key), nullptr);
   EXPECT_TRUE(surfaces.Find(key)->mean_m.isApprox(V3(0.03f, 0.06f, 0.07f), 1e-5f));
   EXPECT_FALSE(surfaces.Find(key)->planar);  // two points span no plane
   // 48 more at one point fill the plain average (weight 50) ...
-  for (int i = 0; i < 48; ++i) surfaces.Add(key, centre, V3(0.09f, 0.01f, 0.01f), nullptr);
-  surfaces.Refresh(key, centre);
+  for (int i = 0; i < 48; ++i) surfaces.Add(key, center, V3(0.09f, 0.01f, 0.01f), nullptr);
+  surfaces.Refresh(key, center);
   const V3 plain = (V3(0.03f, 0.06f, 0.07f) * 2.0f + V3(0.09f, 0.01f, 0.01f) * 48.0f) / 50.0f;
   EXPECT_TRUE(surfaces.Find(key)->mean_m.isApprox(plain, 1e-5f));
   // ... after which each return moves the mean by 1/50 of its offset.
-  surfaces.Add(key, centre, V3(0.0f, 0.0f, 0.0f), nullptr);
-  surfaces.Refresh(key, centre);
+  surfaces.Add(key, center, V3(0.0f, 0.0f, 0.0f), nullptr);
+  surfaces.Refresh(key, center);
   EXPECT_TRUE(surfaces.Find(key)->mean_m.isApprox(plain * (49.0f / 50.0f), 1e-5f));
   surfaces.Erase(key);
   EXPECT_EQ(surfaces.Find(key), nullptr);
@@ -108,12 +108,12 @@ TEST(SurfacePoints, MeanFollowsTheReturnsThenForgetsExponentially) {
 // above; its element (null when it has none).
 const SurfacePoints::Element* SeenFromAbove(SurfacePoints* surfaces) {
   const std::uint64_t key = SurfacePoints::Pack(Eigen::Vector3i(0, 0, 0));
-  const V3 centre(0.05f, 0.05f, 0.05f);
+  const V3 center(0.05f, 0.05f, 0.05f);
   const V3 sensor(0.3f, -0.2f, 2.0f);
   for (const V3& p : SamplePlane(V3(0.05f, 0.05f, 0.02f), V3::UnitZ(), 0.05f, 30, 3)) {
-    surfaces->Add(key, centre, p, &sensor);
+    surfaces->Add(key, center, p, &sensor);
   }
-  surfaces->Refresh(key, centre);
+  surfaces->Refresh(key, center);
   return surfaces->Find(key);
 }
 
@@ -139,17 +139,17 @@ TEST(SurfacePoints, PlanarReturnsSeenFromOneSideGiveASignedDiskDistance) {
 // towards the sensor; without a sensor it is only a mean point.
 TEST(SurfacePoints, ScanLinesTakeTheNormalAcrossThemTowardsTheSensor) {
   SurfacePoints surfaces(kRes);
-  const V3 centre(0.05f, 0.05f, 0.05f);
+  const V3 center(0.05f, 0.05f, 0.05f);
   const V3 sensor(0.045f, 0.05f - 3.0f, 0.03f + 4.0f);  // across the line, level with its middle
   const std::uint64_t viewed = SurfacePoints::Pack(Eigen::Vector3i(0, 0, 0));
   const std::uint64_t unviewed = SurfacePoints::Pack(Eigen::Vector3i(10, 0, 0));  // no neighbour
   for (int i = 0; i < 10; ++i) {
     const V3 p(0.01f * static_cast<float>(i), 0.05f, 0.03f);  // along x
-    surfaces.Add(viewed, centre, p, &sensor);
-    surfaces.Add(unviewed, centre, p, nullptr);
+    surfaces.Add(viewed, center, p, &sensor);
+    surfaces.Add(unviewed, center, p, nullptr);
   }
-  surfaces.Refresh(viewed, centre);
-  surfaces.Refresh(unviewed, centre);
+  surfaces.Refresh(viewed, center);
+  surfaces.Refresh(unviewed, center);
   const SurfacePoints::Element* line = surfaces.Find(viewed);
   ASSERT_NE(line, nullptr);
   ASSERT_TRUE(line->planar);
@@ -177,13 +177,13 @@ TEST(SurfacePoints, UnsignedSurfacesReadTheHeightBehindTheDiskAsAMagnitude) {
 
 TEST(SurfacePoints, PlanesSeenFromNoSensorAreNotSigned) {
   SurfacePoints surfaces(kRes);
-  const V3 centre(0.05f, 0.05f, 0.05f);
+  const V3 center(0.05f, 0.05f, 0.05f);
   const std::uint64_t key = SurfacePoints::Pack(Eigen::Vector3i(0, 0, 0));
-  for (const V3& p : SamplePlane(centre, V3::UnitZ(), 0.05f, 30, 4)) surfaces.Add(key, centre, p, nullptr);
-  surfaces.Refresh(key, centre);
+  for (const V3& p : SamplePlane(center, V3::UnitZ(), 0.05f, 30, 4)) surfaces.Add(key, center, p, nullptr);
+  surfaces.Refresh(key, center);
   ASSERT_TRUE(surfaces.Find(key)->planar);
   EXPECT_FALSE(surfaces.Find(key)->oriented);
-  EXPECT_NEAR(surfaces.SignedDistance(*surfaces.Find(key), centre - V3(0, 0, 0.2f)), 0.2f, 1e-5f);
+  EXPECT_NEAR(surfaces.SignedDistance(*surfaces.Find(key), center - V3(0, 0, 0.2f)), 0.2f, 1e-5f);
 }
 
 TEST(SurfacePoints, VoxelsTheRaysFreeForgetTheirSurface) {
@@ -203,40 +203,40 @@ TEST(SurfacePoints, VoxelsTheRaysFreeForgetTheirSurface) {
 // Walls exactly on voxel boundaries: every return falls into the voxel on
 // one side, so voxel centres put the surface half a voxel (5 cm) off.
 TEST(SurfacePoints, PlaneOnAVoxelBoundaryReadsZeroOnThePlane) {
-  const V3 centre(0.0f, 0.0f, 0.0f);
+  const V3 center(0.0f, 0.0f, 0.0f);
   const V3 sensor(0.13f, -0.21f, 1.5f);
-  const auto subvoxel = PlaneField(true, centre, V3::UnitZ(), sensor);
+  const auto subvoxel = PlaneField(true, center, V3::UnitZ(), sensor);
   ASSERT_EQ(subvoxel->encoding(), DistanceField::Encoding::kSigned);
-  EXPECT_LT(MaxOnPlane(*subvoxel, centre, V3::UnitZ()), 0.02f);
+  EXPECT_LT(MaxOnPlane(*subvoxel, center, V3::UnitZ()), 0.02f);
   for (const V3& foot : {V3(0.0f, 0.0f, 0.0f), V3(0.33f, -0.71f, 0.0f), V3(-0.96f, 0.45f, 0.0f)}) {
     EXPECT_NEAR(ArgminAlongNormal(*subvoxel, foot, V3::UnitZ()), 0.0f, 0.01f) << foot.transpose();
   }
   // Voxel centres (the previous behaviour): 5 cm on the plane, minimum at
   // the centres of the occupied voxels, in free space.
-  const auto centres = PlaneField(false, centre, V3::UnitZ(), sensor);
-  EXPECT_NEAR(MaxOnPlane(*centres, centre, V3::UnitZ()), 0.05f, 0.002f);
-  EXPECT_NEAR(ArgminAlongNormal(*centres, V3(0.33f, -0.71f, 0.0f), V3::UnitZ()), 0.05f, 0.001f);
+  const auto centers = PlaneField(false, center, V3::UnitZ(), sensor);
+  EXPECT_NEAR(MaxOnPlane(*centers, center, V3::UnitZ()), 0.05f, 0.002f);
+  EXPECT_NEAR(ArgminAlongNormal(*centers, V3(0.33f, -0.71f, 0.0f), V3::UnitZ()), 0.05f, 0.001f);
 }
 
 TEST(SurfacePoints, PlaneAtAnArbitraryOffsetSeenFromBelowReadsZeroOnThePlane) {
-  const V3 centre(0.0f, 0.0f, 0.037f);
+  const V3 center(0.0f, 0.0f, 0.037f);
   const V3 sensor(-0.4f, 0.3f, -1.2f);
-  const auto subvoxel = PlaneField(true, centre, V3::UnitZ(), sensor);
-  EXPECT_LT(MaxOnPlane(*subvoxel, centre, V3::UnitZ()), 0.02f);
+  const auto subvoxel = PlaneField(true, center, V3::UnitZ(), sensor);
+  EXPECT_LT(MaxOnPlane(*subvoxel, center, V3::UnitZ()), 0.02f);
   for (const V3& foot : {V3(0.0f, 0.0f, 0.037f), V3(0.52f, 0.18f, 0.037f), V3(-0.3f, -1.1f, 0.037f)}) {
     EXPECT_NEAR(ArgminAlongNormal(*subvoxel, foot, V3::UnitZ()) + 0.037f, 0.037f, 0.01f);
   }
   // Voxel centres: the minimum sits at the occupied voxels' centres (z = 0.05).
-  const auto centres = PlaneField(false, centre, V3::UnitZ(), sensor);
-  EXPECT_NEAR(ArgminAlongNormal(*centres, V3(0.52f, 0.18f, 0.037f), V3::UnitZ()), 0.013f, 0.001f);
+  const auto centers = PlaneField(false, center, V3::UnitZ(), sensor);
+  EXPECT_NEAR(ArgminAlongNormal(*centers, V3(0.52f, 0.18f, 0.037f), V3::UnitZ()), 0.013f, 0.001f);
 }
 
 TEST(SurfacePoints, TiltedPlaneReadsZeroOnThePlane) {
   const V3 normal = V3(0.3f, -0.2f, 0.9f).normalized();
-  const V3 centre(0.011f, 0.023f, 0.017f);
-  const auto field = PlaneField(true, centre, normal, centre + 1.5f * normal + V3(0.2f, 0.1f, 0.0f));
-  EXPECT_LT(MaxOnPlane(*field, centre, normal), 0.02f);
-  for (const V3& foot : SamplePlane(centre, normal, 1.0f, 5, 8)) {
+  const V3 center(0.011f, 0.023f, 0.017f);
+  const auto field = PlaneField(true, center, normal, center + 1.5f * normal + V3(0.2f, 0.1f, 0.0f));
+  EXPECT_LT(MaxOnPlane(*field, center, normal), 0.02f);
+  for (const V3& foot : SamplePlane(center, normal, 1.0f, 5, 8)) {
     EXPECT_NEAR(ArgminAlongNormal(*field, foot, normal), 0.0f, 0.01f) << foot.transpose();
   }
 }
@@ -253,7 +253,7 @@ void ExpectCellsHoldTheDistanceToThePlane(bool signed_surfaces) {
     for (int y = 0; y < field->dims().y(); ++y) {
       for (int z = 0; z < field->dims().z(); ++z) {
         const Eigen::Vector3i cell(x, y, z);
-        const V3 c = field->CellCentre(cell);
+        const V3 c = field->CellCenter(cell);
         if (c.head<2>().cwiseAbs().maxCoeff() > 1.2f) continue;  // 0.8 m from the plane's edges
         const float truth = std::clamp(c.z() - plane_z, -field->clamp(), field->clamp());
         ASSERT_NEAR(field->CellValue(cell), signed_surfaces ? truth : std::abs(truth), 1e-3f) << c.transpose();
@@ -290,7 +290,7 @@ TEST(SurfacePoints, VoxelsFreedByOctomapInsertionForgetTheirSurface) {
 }
 
 // Voxels without returns (an octree prior) keep the distance to their centre.
-TEST(SurfacePoints, OctreePriorsKeepVoxelCentreDistances) {
+TEST(SurfacePoints, OctreePriorsKeepVoxelCenterDistances) {
   auto tree = std::make_unique<octomap::OcTree>(kRes);
   for (const V3& p : SamplePlane(V3::Zero(), V3::UnitZ(), 2.0f, 20000, 10)) {
     tree->updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);

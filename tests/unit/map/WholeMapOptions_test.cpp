@@ -28,8 +28,8 @@ DistanceMapOptions Options() {
 }
 
 TEST(WholeMapOptions, OneFixedBoxReachesEveryPoint) {
-  const Eigen::Vector3f centre(2.0f, 0.0f, 1.0f);
-  const std::optional<DistanceMapOptions> whole = WholeMapOptions(LongFloor(), Options(), centre);
+  const Eigen::Vector3f center(2.0f, 0.0f, 1.0f);
+  const std::optional<DistanceMapOptions> whole = WholeMapOptions(LongFloor(), Options(), center);
   ASSERT_TRUE(whole.has_value());
   EXPECT_FALSE(whole->follow_sensor);
   // From x = 2 the far end (60 m) and its padding (0.5 m clamp + one voxel) must be inside.
@@ -38,7 +38,7 @@ TEST(WholeMapOptions, OneFixedBoxReachesEveryPoint) {
   EXPECT_DOUBLE_EQ(whole->resolution_m, 0.1);
 
   // Far beyond the original 10 m box, without moving the sensor: exact distances to the floor.
-  const auto map = DistanceMap::FromPoints(LongFloor(), *whole, centre);
+  const auto map = DistanceMap::FromPoints(LongFloor(), *whole, center);
   map->WaitForUpdates();
   const auto field = map->Snapshot();
   for (const float x : {1.0f, 30.0f, 55.0f, 59.5f}) {

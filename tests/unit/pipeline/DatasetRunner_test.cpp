@@ -53,7 +53,7 @@ struct Outcome {
   std::size_t trajectory_poses = 0;
 };
 
-Outcome Localise(const fs::path& data) {
+Outcome Localize(const fs::path& data) {
   const Platform platform = LoadPlatform(kPlatform);
   Localizer localizer(LocalizerOptions::FromPlatform(CoreParameters::FromMap(platform.parameters)),
                       platform.plugin.plugin);
@@ -69,8 +69,8 @@ Outcome Localise(const fs::path& data) {
   return outcome;
 }
 
-TEST(RunDataset, CleanDataIsLocalisedWithoutSkips) {
-  const Outcome o = Localise(CleanDataset());
+TEST(RunDataset, CleanDataIsLocalizedWithoutSkips) {
+  const Outcome o = Localize(CleanDataset());
   EXPECT_TRUE(o.summary.error.empty()) << o.summary.error;
   EXPECT_EQ(o.stats.scans, 240u);  // 6 s at 40 lines/s
   EXPECT_EQ(o.summary.poses_written, o.stats.scans);
@@ -86,7 +86,7 @@ TEST(RunDataset, TruncatedScanFileEndsWithAnErrorKeepingThePoses) {
   const fs::path data = RewriteDataset("truncated", [](io::DatasetEvent*) { return true; });
   const auto size = fs::file_size(data / "scans.bin");
   fs::resize_file(data / "scans.bin", size - 1000);
-  const Outcome o = Localise(data);
+  const Outcome o = Localize(data);
   EXPECT_NE(o.summary.error.find("scans.bin"), std::string::npos) << o.summary.error;
   EXPECT_NE(o.summary.error.find("truncated"), std::string::npos) << o.summary.error;
   EXPECT_GT(o.trajectory_poses, 100u);
@@ -104,7 +104,7 @@ TEST(RunDataset, NanRangesAreDroppedAndAllNanLinesSkipped) {
     }
     return true;
   });
-  const Outcome o = Localise(data);
+  const Outcome o = Localize(data);
   EXPECT_TRUE(o.summary.error.empty()) << o.summary.error;
   EXPECT_EQ(o.stats.scans_bad_input, 1u);
   EXPECT_GE(o.stats.beams_dropped, 10u + 1081u);
@@ -116,7 +116,7 @@ TEST(RunDataset, ImuGapIsBridgedAndCounted) {
     const auto* imu = std::get_if<ImuSample>(e);
     return imu == nullptr || imu->time_s < 3.0 || imu->time_s > 3.5;
   });
-  const Outcome o = Localise(data);
+  const Outcome o = Localize(data);
   EXPECT_TRUE(o.summary.error.empty()) << o.summary.error;
   EXPECT_EQ(o.stats.imu_gaps, 1u);
   EXPECT_EQ(o.summary.poses_written, o.stats.scans);
@@ -127,7 +127,7 @@ TEST(RunDataset, MissingEncoderSamplesSkipTheUncoveredScans) {
     const auto* enc = std::get_if<EncoderSample>(e);
     return enc == nullptr || enc->time_s < 2.0 || enc->time_s > 3.0;
   });
-  const Outcome o = Localise(data);
+  const Outcome o = Localize(data);
   EXPECT_TRUE(o.summary.error.empty()) << o.summary.error;
   const std::size_t skipped = o.stats.scans_no_encoder + o.stats.scans_bad_input;
   EXPECT_GE(skipped, 30u);  // about 40 lines fall in the 1 s gap
@@ -147,7 +147,7 @@ TEST(RunDataset, ImuTimeGoingBackwardsInTheFileIsAnErrorNamingTheLine) {
   std::ofstream out(data / "imu.csv");
   for (const auto& l : lines) out << l << '\n';
   out.close();
-  const Outcome o = Localise(data);
+  const Outcome o = Localize(data);
   EXPECT_NE(o.summary.error.find("imu.csv:"), std::string::npos) << o.summary.error;
   EXPECT_GT(o.trajectory_poses, 0u);
 }

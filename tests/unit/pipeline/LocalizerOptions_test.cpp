@@ -83,14 +83,14 @@ TEST(LocalizerOptionsTest, ForPriorMapTunesForAFixedMap) {
   EXPECT_DOUBLE_EQ(prior.eskf.gyro_bias_walk_rad_s_sqrt_s, 2.0 * odometry.eskf.gyro_bias_walk_rad_s_sqrt_s);
 }
 
-TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
+TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighborhoodPlanesOnly) {
   LocalizerOptions o = LocalizerOptions::FromPlatform(WithResolution(0.1));
-  EXPECT_FALSE(o.neighbourhood_planes.has_value());  // off unless asked for (unimap run --plane-matching)
+  EXPECT_FALSE(o.neighborhood_planes.has_value());  // off unless asked for (unimap run --plane-matching)
   EXPECT_FALSE(o.gpf.point_to_plane);
   o.UsePlaneMatching();
   std::string why;
   EXPECT_TRUE(o.IsValid(&why)) << why;
-  EXPECT_TRUE(o.neighbourhood_planes.has_value());
+  EXPECT_TRUE(o.neighborhood_planes.has_value());
   EXPECT_TRUE(o.gpf.point_to_plane);
   EXPECT_TRUE(o.gpf.planes_only);
   EXPECT_FALSE(o.line_gap_fill.has_value());  // planes are fitted across the measured stripes
@@ -98,11 +98,11 @@ TEST(LocalizerOptionsTest, PlaneMatchingTiesPointsToNeighbourhoodPlanesOnly) {
   o.gpf.point_to_plane = false;
   o.gpf.planes_only = false;
   EXPECT_FALSE(o.IsValid(&why));
-  EXPECT_NE(why.find("neighbourhood_planes"), std::string::npos);
+  EXPECT_NE(why.find("neighborhood_planes"), std::string::npos);
   o.UsePlaneMatching();
-  o.neighbourhood_planes->radius_cells = 0;
+  o.neighborhood_planes->radius_cells = 0;
   EXPECT_FALSE(o.IsValid(&why));
-  EXPECT_NE(why.find("neighbourhood_plane: radius_cells"), std::string::npos);
+  EXPECT_NE(why.find("neighborhood_plane: radius_cells"), std::string::npos);
 }
 
 TEST(LocalizerOptionsTest, LineGapFillIsOnByDefaultAndChecked) {

@@ -64,10 +64,10 @@ TEST(MapperTest, ThreeDScansAndSubmapsFollowTheTwoStageScheme) {
   EXPECT_EQ(m.stats.submaps, 4);
   EXPECT_EQ(m.stats.retired_submaps, 2u);
   EXPECT_EQ(m.stats.loop_closures, 0u);  // a straight static start: nothing to close
-  EXPECT_EQ(m.stats.optimisations, 0u);  // no loop closure: the graph is at its optimum
+  EXPECT_EQ(m.stats.optimizations, 0u);  // no loop closure: the graph is at its optimum
 }
 
-TEST(MapperTest, WithoutLoopClosuresTheOptimisedTrajectoryIsTheOdometry) {
+TEST(MapperTest, WithoutLoopClosuresTheOptimizedTrajectoryIsTheOdometry) {
   const MappedTunnel& m = Mapped();
   ASSERT_EQ(m.optimized.size(), m.streamed.size());
   for (std::size_t i = 0; i < m.streamed.size(); ++i) {

@@ -61,7 +61,7 @@ LocalizerOptions Options() {
   return o;
 }
 
-Eigen::Isometry3d AtCentre() {
+Eigen::Isometry3d AtCenter() {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.translation() = Eigen::Vector3d(0, 0, 1.5);
   return T;
@@ -78,7 +78,7 @@ TEST(ScanMatcher, ConfidentSweepLeavesOutPointsPastTheMap) {
   int unmapped = 0;
   const std::vector<V3> scan = ScanWithUnmappedWall(&unmapped);
   ScanMatcher matcher(Options());
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCentre(), Covariance(0.01, 0.001), scan, false);
+  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, false);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   // The unmapped wall (1 m from the map, beyond the 0.15 + 3 x 0.01 m +
   // range x 0.003 gate) is left out, the box's own points are measured.
@@ -92,7 +92,7 @@ TEST(ScanMatcher, UncertainSweepKeepsItsPoints) {
   ScanMatcher matcher(Options());
   // Position sigma 0.15 m (below the wide search's 2 voxels): the gate is
   // 0.15 + 0.45 m, more than the field's 0.5 m clamp, so nothing is left out.
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCentre(), Covariance(0.15, 0.01), scan, false);
+  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.15, 0.01), scan, false);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   EXPECT_FALSE(r.searched);
   EXPECT_EQ(r.match.points_unseen, 0);
@@ -102,7 +102,7 @@ TEST(ScanMatcher, LineGateDoesNotWidenWithThePrediction) {
   int unmapped = 0;
   const std::vector<V3> scan = ScanWithUnmappedWall(&unmapped);
   ScanMatcher matcher(Options());
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCentre(), Covariance(0.15, 0.01), scan, true);
+  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.15, 0.01), scan, true);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   EXPECT_EQ(r.match.points_unseen, unmapped);
 }
@@ -113,8 +113,8 @@ TEST(ScanMatcher, NoGateMeasuresEveryPoint) {
   LocalizerOptions o = Options();
   o.max_predicted_distance_m = 0.0;
   ScanMatcher matcher(o);
-  EXPECT_EQ(matcher.Match(BoxField(), AtCentre(), Covariance(0.01, 0.001), scan, false).match.points_unseen, 0);
-  EXPECT_EQ(matcher.Match(BoxField(), AtCentre(), Covariance(0.01, 0.001), scan, true).match.points_unseen, 0);
+  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, false).match.points_unseen, 0);
+  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, true).match.points_unseen, 0);
 }
 
 }  // namespace

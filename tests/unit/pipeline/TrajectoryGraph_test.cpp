@@ -27,7 +27,7 @@ map::SubmapInsertion Into(int id, const Eigen::Isometry3d& T_local_submap, bool 
   return insertion;
 }
 
-TEST(TrajectoryGraphTest, WithoutOptimisationTheWorldIsTheLocalFrame) {
+TEST(TrajectoryGraphTest, WithoutOptimizationTheWorldIsTheLocalFrame) {
   TrajectoryGraph graph(0.05, 0.005);
   const Eigen::Isometry3d T_local_submap(Eigen::Translation3d(1, 2, 0));
   graph.AddKeyScan(1.0, Pose(1, 2, 0, 0.1), Into(0, T_local_submap, true));
@@ -39,7 +39,7 @@ TEST(TrajectoryGraphTest, WithoutOptimisationTheWorldIsTheLocalFrame) {
   EXPECT_TRUE(graph.ToWorld(1.5, Pose(1.5, 2, 0, 0.15)).isApprox(Pose(1.5, 2, 0, 0.15)));
 }
 
-TEST(TrajectoryGraphTest, OptimisedPosesCorrectLaterPosesAndNewNodes) {
+TEST(TrajectoryGraphTest, OptimizedPosesCorrectLaterPosesAndNewNodes) {
   TrajectoryGraph graph(0.05, 0.005);
   const Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();
   graph.AddKeyScan(1.0, Pose(1, 0, 0, 0.0), Into(0, T_local_submap, true));
@@ -105,9 +105,9 @@ TEST(TrajectoryGraphTest, LoopClosureRemovesDriftOnASquare) {
   graph::PoseGraph copy = graph.graph();
   const graph::OptimizationSummary summary = copy.Optimize(graph::PoseGraphOptions{});
   ASSERT_TRUE(summary.ok) << summary.reason;
-  std::vector<Eigen::Isometry3d> optimised;
-  for (std::size_t i = 0; i < copy.NodeCount(); ++i) optimised.push_back(copy.Pose(static_cast<int>(i)));
-  graph.ApplyOptimized(optimised);
+  std::vector<Eigen::Isometry3d> optimized;
+  for (std::size_t i = 0; i < copy.NodeCount(); ++i) optimized.push_back(copy.Pose(static_cast<int>(i)));
+  graph.ApplyOptimized(optimized);
   const double after = (graph.T_world_key(kScans - 1).translation() - truth.back().translation()).norm();
   // The closure is 100x more certain than one odometry link: the end lands within a few cm.
   EXPECT_LT(after, 0.05) << "before " << before;

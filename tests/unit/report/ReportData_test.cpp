@@ -73,7 +73,7 @@ TEST_F(RunFolderTest, ATruthThatDoesNotOverlapIsANote) {
   EXPECT_NE(data.payload["notes"][0].get<std::string>().find("Not evaluated"), std::string::npos);
 }
 
-TEST_F(RunFolderTest, AMapWithIntensitiesCanBeColouredByThem) {
+TEST_F(RunFolderTest, AMapWithIntensitiesCanBeColoredByThem) {
   {
     std::ofstream pcd(dir_ / "cloud.pcd");
     pcd << "VERSION .7\nFIELDS x y z intensity\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\n"

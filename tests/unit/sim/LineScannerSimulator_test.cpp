@@ -42,7 +42,7 @@ TEST(LineScannerSimulator, BoxRoomRangesEqualAnalyticWallDistances) {
   EXPECT_EQ(scanner.returns(), 3u * 1081u);
 }
 
-TEST(LineScannerSimulator, MovingBodyWithPoseKnotsStaysWithinMicrometres) {
+TEST(LineScannerSimulator, MovingBodyWithPoseKnotsStaysWithinMicrometers) {
   const test::BoxRoom room;
   const World world = room.MakeWorld();
   const MountQuery mount = [](double t) { return test::RotatingMount(t); };

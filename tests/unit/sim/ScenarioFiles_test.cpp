@@ -120,7 +120,7 @@ double WidthAcross(const World& world, const KinematicState& state) {
   return left && right ? left->range_m + right->range_m : 1e9;
 }
 
-TEST(ScenarioFiles, NarrowHallwayIs1point1MetresWideAtItsNarrowest) {
+TEST(ScenarioFiles, NarrowHallwayIs1point1MetersWideAtItsNarrowest) {
   const Scenario s = LoadScenario(ScenarioFile("narrow_hallway"));
   const World world = LoadWorld(s.world, s.world_file);
   const WaypointTrajectory traj = s.MakeTrajectory();
@@ -135,7 +135,7 @@ TEST(ScenarioFiles, NarrowHallwayIs1point1MetresWideAtItsNarrowest) {
   EXPECT_LT((traj.At(traj.end_time_s()).position_m - traj.At(0.0).position_m).norm(), 1e-12);
 }
 
-TEST(ScenarioFiles, CorridorLoopIsA40By20LoopTwoMetresWide) {
+TEST(ScenarioFiles, CorridorLoopIsA40By20LoopTwoMetersWide) {
   const Scenario s = LoadScenario(ScenarioFile("corridor_loop"));
   const World world = LoadWorld(s.world, s.world_file);
   const WaypointTrajectory traj = s.MakeTrajectory();

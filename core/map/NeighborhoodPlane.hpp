@@ -7,8 +7,8 @@
 
 namespace unimap::map {
 
-// Settings of FitNeighbourhoodPlane.
-struct NeighbourhoodPlaneOptions {
+// Settings of FitNeighborhoodPlane.
+struct NeighborhoodPlaneOptions {
   int radius_cells = 3;             // the neighbourhood: cells within this many cells per axis of the point's
   int min_cells = 6;                // fewer surface cells than this: kTooFew
   double max_thickness_ratio = 0.1;  // planar when the smallest covariance eigenvalue is at most this
@@ -20,7 +20,7 @@ struct NeighbourhoodPlaneOptions {
 };
 
 // What the surface cells around a point look like.
-enum class NeighbourhoodShape {
+enum class NeighborhoodShape {
   kTooFew,      // fewer than min_cells surface cells
   kLinear,      // they spread along one direction only (a single stripe a line scanner left)
   kPlanar,      // a plane: normal and offset are set
@@ -28,8 +28,8 @@ enum class NeighbourhoodShape {
 };
 
 // The local surface around a point.
-struct NeighbourhoodPlane {
-  NeighbourhoodShape shape = NeighbourhoodShape::kTooFew;
+struct NeighborhoodPlane {
+  NeighborhoodShape shape = NeighborhoodShape::kTooFew;
   Eigen::Vector3f normal_map = Eigen::Vector3f::UnitZ();  // unit normal (kPlanar)
   float offset_m = 0.0f;  // normal . x + offset is the signed height of x above the plane (kPlanar)
 };
@@ -43,7 +43,7 @@ struct NeighbourhoodPlane {
 // stripes; a plane through several of them is the surface itself, so a
 // point beside a stripe can be measured across the surface instead of
 // towards the stripe (docs/mapping.md, known limitation).
-NeighbourhoodPlane FitNeighbourhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
-                                         const NeighbourhoodPlaneOptions& options);
+NeighborhoodPlane FitNeighborhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
+                                         const NeighborhoodPlaneOptions& options);
 
 }  // namespace unimap::map

@@ -1,4 +1,4 @@
-#include "map/NeighbourhoodPlane.hpp"
+#include "map/NeighborhoodPlane.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 namespace unimap::map {
 
-bool NeighbourhoodPlaneOptions::IsValid(std::string* why) const {
+bool NeighborhoodPlaneOptions::IsValid(std::string* why) const {
   std::string local_why;
   if (why == nullptr) why = &local_why;
   if (radius_cells < 1 || radius_cells > 8) {
@@ -25,25 +25,25 @@ bool NeighbourhoodPlaneOptions::IsValid(std::string* why) const {
   return true;
 }
 
-NeighbourhoodPlane FitNeighbourhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
-                                         const NeighbourhoodPlaneOptions& options) {
-  NeighbourhoodPlane out;
+NeighborhoodPlane FitNeighborhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
+                                         const NeighborhoodPlaneOptions& options) {
+  NeighborhoodPlane out;
   if (field.CellCount() == 0 || !p_map.allFinite()) return out;
   const float surface_m = 0.5f * field.resolution();
-  const Eigen::Vector3i centre =
+  const Eigen::Vector3i center =
       ((p_map - field.origin()) / field.resolution()).array().floor().cast<int>();
   const int r = options.radius_cells;
   // Moments about the centre of the point's cell (small numbers, no cancellation).
-  const Eigen::Vector3d reference = field.CellCentre(centre).cast<double>();
+  const Eigen::Vector3d reference = field.CellCenter(center).cast<double>();
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   Eigen::Matrix3d sum_sq = Eigen::Matrix3d::Zero();
   int count = 0;
   for (int dx = -r; dx <= r; ++dx) {
     for (int dy = -r; dy <= r; ++dy) {
       for (int dz = -r; dz <= r; ++dz) {
-        const Eigen::Vector3i cell = centre + Eigen::Vector3i(dx, dy, dz);
+        const Eigen::Vector3i cell = center + Eigen::Vector3i(dx, dy, dz);
         if (!(field.CellDistance(cell) <= surface_m)) continue;  // outside the grid reads clamp()
-        const Eigen::Vector3d x = field.CellCentre(cell).cast<double>() - reference;
+        const Eigen::Vector3d x = field.CellCenter(cell).cast<double>() - reference;
         sum += x;
         sum_sq += x * x.transpose();
         ++count;
@@ -56,15 +56,15 @@ NeighbourhoodPlane FitNeighbourhoodPlane(const DistanceField& field, const Eigen
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
   const Eigen::Vector3d& l = eigen.eigenvalues();  // ascending
   if (l(1) < options.min_spread_ratio * l(2)) {
-    out.shape = NeighbourhoodShape::kLinear;
+    out.shape = NeighborhoodShape::kLinear;
     return out;
   }
   if (l(0) > options.max_thickness_ratio * l(1)) {
-    out.shape = NeighbourhoodShape::kVolumetric;
+    out.shape = NeighborhoodShape::kVolumetric;
     return out;
   }
   const Eigen::Vector3d normal = eigen.eigenvectors().col(0).normalized();
-  out.shape = NeighbourhoodShape::kPlanar;
+  out.shape = NeighborhoodShape::kPlanar;
   out.normal_map = normal.cast<float>();
   out.offset_m = static_cast<float>(-normal.dot(mean + reference));
   return out;
