@@ -10,10 +10,14 @@ namespace {
 
 const char* StreamName(Stream s) {
   switch (s) {
-    case Stream::kImu: return "IMU";
-    case Stream::kEncoder: return "encoder";
-    case Stream::kOdometry: return "odometry";
-    case Stream::kScan: return "scan";
+    case Stream::kImu:
+      return "IMU";
+    case Stream::kEncoder:
+      return "encoder";
+    case Stream::kOdometry:
+      return "odometry";
+    case Stream::kScan:
+      return "scan";
   }
   return "?";
 }

@@ -24,9 +24,12 @@ namespace {
 
 estimation::MotionSource SourceOf(MotionModel motion) {
   switch (motion) {
-    case MotionModel::kImu: return estimation::MotionSource::kImu;
-    case MotionModel::kOdometry: return estimation::MotionSource::kWheelOdometry;
-    case MotionModel::kConstantVelocity: return estimation::MotionSource::kConstantVelocity;
+    case MotionModel::kImu:
+      return estimation::MotionSource::kImu;
+    case MotionModel::kOdometry:
+      return estimation::MotionSource::kWheelOdometry;
+    case MotionModel::kConstantVelocity:
+      return estimation::MotionSource::kConstantVelocity;
   }
   return estimation::MotionSource::kImu;
 }
@@ -263,12 +266,8 @@ Mapper::~Mapper() = default;
 
 void Mapper::AddImu(const ImuSample& sample) { impl_->Add(api::Stream::kImu, sample.time_s, sample); }
 void Mapper::AddEncoder(const EncoderSample& sample) { impl_->Add(api::Stream::kEncoder, sample.time_s, sample); }
-void Mapper::AddOdometry(const OdometrySample& sample) {
-  impl_->Add(api::Stream::kOdometry, sample.time_s, sample);
-}
-void Mapper::AddScan(const RawScan& scan) {
-  impl_->Add(api::Stream::kScan, scan.end_time_s, io::ScanRecord(scan));
-}
+void Mapper::AddOdometry(const OdometrySample& sample) { impl_->Add(api::Stream::kOdometry, sample.time_s, sample); }
+void Mapper::AddScan(const RawScan& scan) { impl_->Add(api::Stream::kScan, scan.end_time_s, io::ScanRecord(scan)); }
 void Mapper::AddScan(const LineScan& scan) {
   io::ScanRecord record(scan);
   const double end_time_s = io::ScanEndTime(record);

@@ -128,8 +128,8 @@ void BM_Match(benchmark::State& state) {
   covariance.diagonal() << 4e-4, 4e-4, 4e-4, 4e-6, 4e-6, 4e-6;  // 2 cm, 0.11 deg
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(gpf.Match(in.body_poses[i], covariance, in.body_scans[i], query,
-                                       in.options.max_predicted_distance_m));
+    benchmark::DoNotOptimize(
+        gpf.Match(in.body_poses[i], covariance, in.body_scans[i], query, in.options.max_predicted_distance_m));
     i = (i + 1) % in.body_scans.size();
   }
   state.SetItemsProcessed(state.iterations());

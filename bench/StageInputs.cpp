@@ -76,7 +76,8 @@ std::unique_ptr<StageInputs> Make(const std::string& scenario, const std::string
       in_key = 0;
     }
   }
-  if (in->key_scans.empty()) throw std::runtime_error(in->name + ": no 3D scan in " + std::to_string(duration_s) + " s");
+  if (in->key_scans.empty())
+    throw std::runtime_error(in->name + ": no 3D scan in " + std::to_string(duration_s) + " s");
   return in;
 }
 

@@ -25,16 +25,16 @@ struct KeyScanInput {
 };
 
 struct StageInputs {
-  std::string name;                       // "corridor_loop / fixed_vlp16"
-  Platform platform;                      // holds the plugin
-  pipeline::LocalizerOptions options;     // FromPlatform
-  std::vector<RawScan> raw_scans;         // as the plugin receives them (line scans converted)
-  EncoderTrack encoder;                   // the whole recorded encoder stream
-  pipeline::PoseHistory truth{1e9};       // true body poses
+  std::string name;                                      // "corridor_loop / fixed_vlp16"
+  Platform platform;                                     // holds the plugin
+  pipeline::LocalizerOptions options;                    // FromPlatform
+  std::vector<RawScan> raw_scans;                        // as the plugin receives them (line scans converted)
+  EncoderTrack encoder;                                  // the whole recorded encoder stream
+  pipeline::PoseHistory truth{1e9};                      // true body poses
   std::vector<std::vector<Eigen::Vector3f>> body_scans;  // deskewed with the true motion
-  std::vector<Eigen::Isometry3d> body_poses;              // true T_map_body at each scan's reference time
-  std::vector<KeyScanInput> key_scans;    // every N scans
-  double duration_s = 0.0;                // data simulated
+  std::vector<Eigen::Isometry3d> body_poses;             // true T_map_body at each scan's reference time
+  std::vector<KeyScanInput> key_scans;                   // every N scans
+  double duration_s = 0.0;                               // data simulated
 };
 
 // The inputs of configs/scenarios/<scenario>.yaml with

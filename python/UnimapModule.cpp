@@ -30,8 +30,8 @@ py::array_t<double> PoseRows(const std::vector<Pose>& poses, Transform transform
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const Eigen::Isometry3d& T = transform(poses[i]);
     const Eigen::Quaterniond q(T.linear());
-    const double row[8] = {poses[i].time_s, T.translation().x(), T.translation().y(), T.translation().z(),
-                           q.x(), q.y(), q.z(), q.w()};
+    const double row[8] = {
+        poses[i].time_s, T.translation().x(), T.translation().y(), T.translation().z(), q.x(), q.y(), q.z(), q.w()};
     for (py::ssize_t c = 0; c < 8; ++c) rows(static_cast<py::ssize_t>(i), c) = row[c];
   }
   return out;
@@ -130,12 +130,14 @@ PYBIND11_MODULE(unimap, m) {
                                }
                                return out;
                              })
-      .def_property_readonly("times", [](const unimap::RawScan& s) {
-        py::array_t<double> out(static_cast<py::ssize_t>(s.points.size()));
-        auto t = out.mutable_unchecked<1>();
-        for (std::size_t i = 0; i < s.points.size(); ++i) t(static_cast<py::ssize_t>(i)) = s.points[i].time_s;
-        return out;
-      })
+      .def_property_readonly("times",
+                             [](const unimap::RawScan& s) {
+                               py::array_t<double> out(static_cast<py::ssize_t>(s.points.size()));
+                               auto t = out.mutable_unchecked<1>();
+                               for (std::size_t i = 0; i < s.points.size(); ++i)
+                                 t(static_cast<py::ssize_t>(i)) = s.points[i].time_s;
+                               return out;
+                             })
       .def_property_readonly("rings", [](const unimap::RawScan& s) {
         py::array_t<std::uint16_t> out(static_cast<py::ssize_t>(s.points.size()));
         auto r = out.mutable_unchecked<1>();
@@ -176,65 +178,76 @@ PYBIND11_MODULE(unimap, m) {
              s.loop_closure = loop_closure;
              return std::make_unique<unimap::Mapper>(s);
            }),
-           py::arg("platform_file"), py::arg("live") = false, py::arg("motion") = "imu",
-           py::arg("encoder") = true, py::arg("odometry") = false, py::arg("threads") = 1,
-           py::arg("loop_closure") = true)
-      .def("add_imu",
-           [](unimap::Mapper& self, double time_s, const Eigen::Vector3d& gyro_rad_s,
-              const Eigen::Vector3d& accel_m_s2) { self.AddImu({time_s, accel_m_s2, gyro_rad_s}); },
-           py::arg("time_s"), py::arg("gyro_rad_s"), py::arg("accel_m_s2"), py::call_guard<py::gil_scoped_release>())
-      .def("add_encoder", [](unimap::Mapper& self, double time_s, double angle_rad) { self.AddEncoder({time_s, angle_rad}); },
-           py::arg("time_s"), py::arg("angle_rad"), py::call_guard<py::gil_scoped_release>())
-      .def("add_odometry",
-           [](unimap::Mapper& self, double time_s, const Eigen::Matrix4d& T_odom_body) {
-             unimap::OdometrySample s;
-             s.time_s = time_s;
-             s.T_odom_body.matrix() = T_odom_body;
-             self.AddOdometry(s);
-           },
-           py::arg("time_s"), py::arg("T_odom_body"), py::call_guard<py::gil_scoped_release>())
-      .def("add_scan",
-           [](unimap::Mapper& self, const FloatRows& points, std::optional<FloatRows> times,
-              std::optional<double> start_time_s, std::optional<double> end_time_s,
-              std::optional<py::array_t<std::uint16_t>> rings) {
-             const unimap::RawScan scan = MakeSweep(points, std::move(times), start_time_s, end_time_s, std::move(rings));
-             const py::gil_scoped_release release;  // other Python threads run while the scan is processed
-             self.AddScan(scan);
-           },
-           py::arg("points"), py::arg("times") = py::none(), py::arg("start_time_s") = py::none(),
-           py::arg("end_time_s") = py::none(), py::arg("rings") = py::none())
-      .def("add", [](unimap::Mapper& self, const py::tuple& event) {
-             // An event of read_dataset.
-             // (Cast with the GIL held; processed without it.)
-             const std::string kind = event[0].cast<std::string>();
-             if (kind == "imu") {
-               const auto sample = event[1].cast<unimap::ImuSample>();
-               const py::gil_scoped_release release;
-               return self.AddImu(sample);
-             }
-             if (kind == "encoder") {
-               const auto sample = event[1].cast<unimap::EncoderSample>();
-               const py::gil_scoped_release release;
-               return self.AddEncoder(sample);
-             }
-             if (kind == "odometry") {
-               const auto sample = event[1].cast<unimap::OdometrySample>();
-               const py::gil_scoped_release release;
-               return self.AddOdometry(sample);
-             }
-             if (kind == "scan") {
-               const auto& scan = event[1].cast<const unimap::RawScan&>();
-               const py::gil_scoped_release release;
-               return self.AddScan(scan);
-             }
-             if (kind == "line") {
-               const auto& scan = event[1].cast<const unimap::LineScan&>();
-               const py::gil_scoped_release release;
-               return self.AddScan(scan);
-             }
-             throw unimap::InputError("add: unknown event kind '" + kind + "'");
-           },
-           py::arg("event"))
+           py::arg("platform_file"), py::arg("live") = false, py::arg("motion") = "imu", py::arg("encoder") = true,
+           py::arg("odometry") = false, py::arg("threads") = 1, py::arg("loop_closure") = true)
+      .def(
+          "add_imu",
+          [](unimap::Mapper& self, double time_s, const Eigen::Vector3d& gyro_rad_s,
+             const Eigen::Vector3d& accel_m_s2) {
+            self.AddImu({time_s, accel_m_s2, gyro_rad_s});
+          },
+          py::arg("time_s"), py::arg("gyro_rad_s"), py::arg("accel_m_s2"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "add_encoder",
+          [](unimap::Mapper& self, double time_s, double angle_rad) {
+            self.AddEncoder({time_s, angle_rad});
+          },
+          py::arg("time_s"), py::arg("angle_rad"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "add_odometry",
+          [](unimap::Mapper& self, double time_s, const Eigen::Matrix4d& T_odom_body) {
+            unimap::OdometrySample s;
+            s.time_s = time_s;
+            s.T_odom_body.matrix() = T_odom_body;
+            self.AddOdometry(s);
+          },
+          py::arg("time_s"), py::arg("T_odom_body"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "add_scan",
+          [](unimap::Mapper& self, const FloatRows& points, std::optional<FloatRows> times,
+             std::optional<double> start_time_s, std::optional<double> end_time_s,
+             std::optional<py::array_t<std::uint16_t>> rings) {
+            const unimap::RawScan scan =
+                MakeSweep(points, std::move(times), start_time_s, end_time_s, std::move(rings));
+            const py::gil_scoped_release release;  // other Python threads run while the scan is processed
+            self.AddScan(scan);
+          },
+          py::arg("points"), py::arg("times") = py::none(), py::arg("start_time_s") = py::none(),
+          py::arg("end_time_s") = py::none(), py::arg("rings") = py::none())
+      .def(
+          "add",
+          [](unimap::Mapper& self, const py::tuple& event) {
+            // An event of read_dataset.
+            // (Cast with the GIL held; processed without it.)
+            const std::string kind = event[0].cast<std::string>();
+            if (kind == "imu") {
+              const auto sample = event[1].cast<unimap::ImuSample>();
+              const py::gil_scoped_release release;
+              return self.AddImu(sample);
+            }
+            if (kind == "encoder") {
+              const auto sample = event[1].cast<unimap::EncoderSample>();
+              const py::gil_scoped_release release;
+              return self.AddEncoder(sample);
+            }
+            if (kind == "odometry") {
+              const auto sample = event[1].cast<unimap::OdometrySample>();
+              const py::gil_scoped_release release;
+              return self.AddOdometry(sample);
+            }
+            if (kind == "scan") {
+              const auto& scan = event[1].cast<const unimap::RawScan&>();
+              const py::gil_scoped_release release;
+              return self.AddScan(scan);
+            }
+            if (kind == "line") {
+              const auto& scan = event[1].cast<const unimap::LineScan&>();
+              const py::gil_scoped_release release;
+              return self.AddScan(scan);
+            }
+            throw unimap::InputError("add: unknown event kind '" + kind + "'");
+          },
+          py::arg("event"))
       .def("set_pose_callback",
            [](unimap::Mapper& self, std::function<void(double, Eigen::Matrix4d, bool)> callback) {
              self.SetPoseCallback([callback](const unimap::MapperPose& pose) {
@@ -243,43 +256,43 @@ PYBIND11_MODULE(unimap, m) {
              });
            })
       .def("finish", &unimap::Mapper::Finish, py::call_guard<py::gil_scoped_release>())
-      .def("poses",
-           [](const unimap::Mapper& self) {
-             return PoseRows(self.Poses(), [](const unimap::MapperPose& p) -> const Eigen::Isometry3d& {
-               return p.T_odom_body;
-             });
-           },
-           "The filter's scan poses (odometry frame) as (N, 8) TUM rows")
-      .def("trajectory",
-           [](const unimap::Mapper& self) {
-             return PoseRows(self.Trajectory());
-           },
-           "The optimised trajectory (world frame) as (N, 8) TUM rows")
-      .def("map_points",
-           [](const unimap::Mapper& self, double voxel_m) {
-             const std::vector<Eigen::Vector3f> points = self.MapPoints(voxel_m);
-             py::array_t<float> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
-             auto rows = out.mutable_unchecked<2>();
-             for (std::size_t i = 0; i < points.size(); ++i) {
-               for (int a = 0; a < 3; ++a) rows(static_cast<py::ssize_t>(i), a) = points[i][a];
-             }
-             return out;
-           },
-           py::arg("voxel_m") = 0.1)
+      .def(
+          "poses",
+          [](const unimap::Mapper& self) {
+            return PoseRows(self.Poses(),
+                            [](const unimap::MapperPose& p) -> const Eigen::Isometry3d& { return p.T_odom_body; });
+          },
+          "The filter's scan poses (odometry frame) as (N, 8) TUM rows")
+      .def(
+          "trajectory", [](const unimap::Mapper& self) { return PoseRows(self.Trajectory()); },
+          "The optimised trajectory (world frame) as (N, 8) TUM rows")
+      .def(
+          "map_points",
+          [](const unimap::Mapper& self, double voxel_m) {
+            const std::vector<Eigen::Vector3f> points = self.MapPoints(voxel_m);
+            py::array_t<float> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
+            auto rows = out.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < points.size(); ++i) {
+              for (int a = 0; a < 3; ++a) rows(static_cast<py::ssize_t>(i), a) = points[i][a];
+            }
+            return out;
+          },
+          py::arg("voxel_m") = 0.1)
       .def("write_map", &unimap::Mapper::WriteMap, py::arg("path"), py::arg("voxel_m") = 0.1)
-      .def("status", [](const unimap::Mapper& self) {
-        const unimap::MapperStatus s = self.Status();
-        py::dict d;
-        d["scans_added"] = s.scans_added;
-        d["scans_processed"] = s.scans_processed;
-        d["scans_matched"] = s.scans_matched;
-        d["key_scans"] = s.key_scans;
-        d["submaps"] = s.submaps;
-        d["loop_closures"] = s.loop_closures;
-        d["lag_s"] = s.lag_s;
-        d["events_waiting"] = s.events_waiting;
-        return d;
-      })
+      .def("status",
+           [](const unimap::Mapper& self) {
+             const unimap::MapperStatus s = self.Status();
+             py::dict d;
+             d["scans_added"] = s.scans_added;
+             d["scans_processed"] = s.scans_processed;
+             d["scans_matched"] = s.scans_matched;
+             d["key_scans"] = s.key_scans;
+             d["submaps"] = s.submaps;
+             d["loop_closures"] = s.loop_closures;
+             d["lag_s"] = s.lag_s;
+             d["events_waiting"] = s.events_waiting;
+             return d;
+           })
       .def_property_readonly("payload", &unimap::Mapper::PayloadName);
 
   py::class_<unimap::Dataset>(m, "Dataset",
@@ -306,9 +319,7 @@ PYBIND11_MODULE(unimap, m) {
                                d["has_groundtruth"] = i.has_groundtruth;
                                return d;
                              })
-      .def("ground_truth", [](const unimap::Dataset& self) {
-        return PoseRows(self.GroundTruth());
-      });
+      .def("ground_truth", [](const unimap::Dataset& self) { return PoseRows(self.GroundTruth()); });
   m.def(
       "read_dataset", [](const std::string& folder) { return std::make_unique<unimap::Dataset>(folder); },
       py::arg("folder"), "The events of a dataset folder (a Dataset to iterate).");

@@ -15,4 +15,4 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev libcli11-dev libspdlog-dev robin-map-dev \
   libbz2-dev librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev \
   nlohmann-json3-dev libcairo2-dev fonts-dejavu-core libjs-three libjs-dygraphs \
-  chromium python3 python3-dev python3-numpy pybind11-dev
+  chromium python3 python3-dev python3-numpy pybind11-dev clang-format-14

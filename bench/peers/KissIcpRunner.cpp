@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <tbb/global_control.h>
+#include <Eigen/Geometry>
 
 #include "kiss_icp/pipeline/KissICP.hpp"
 
@@ -108,8 +108,7 @@ int main(int argc, char** argv) {
         << q.z() << ' ' << q.w() << '\n';
   }
   std::sort(per_sweep_ms.begin(), per_sweep_ms.end());
-  std::printf("kiss-icp: %zu sweeps, registration %.1f ms in all, median %.1f ms/sweep, %.1f sweeps/s\n",
-              sweeps.size(), total_ms, per_sweep_ms[per_sweep_ms.size() / 2],
-              1000.0 * static_cast<double>(sweeps.size()) / total_ms);
+  std::printf("kiss-icp: %zu sweeps, registration %.1f ms in all, median %.1f ms/sweep, %.1f sweeps/s\n", sweeps.size(),
+              total_ms, per_sweep_ms[per_sweep_ms.size() / 2], 1000.0 * static_cast<double>(sweeps.size()) / total_ms);
   return 0;
 }

@@ -42,8 +42,7 @@ std::size_t EditDistance(const std::string& a, const std::string& b) {
 
 ParameterResolver::ParameterResolver(const ParameterSet& set) : set_(set) {}
 
-std::string ParameterResolver::ClosestKey(const std::string& key,
-                                          std::size_t max_distance) const {
+std::string ParameterResolver::ClosestKey(const std::string& key, std::size_t max_distance) const {
   std::string best;
   std::size_t best_distance = max_distance + 1;
   for (const ParameterSpec& spec : set_.specs()) {

@@ -14,7 +14,7 @@ namespace unimap {
 
 // Effective parameters: the plugin's defaults overridden by a file.
 struct ResolvedParameters {
-  ParameterMap parameters;                  // every key of the set, coerced to its spec's type
+  ParameterMap parameters;                    // every key of the set, coerced to its spec's type
   std::vector<EffectiveParameter> effective;  // the same values in spec order, with provenance
 };
 

@@ -35,8 +35,7 @@ int LineOfOverride(const PlatformFile& file, const std::string& key) {
 
 // Loads the plugin a parsed platform file names, resolves its parameters and
 // configures it.
-Platform BuildPlatform(const PlatformFile& file, const std::filesystem::path& base_folder,
-                       const PluginLoader& loader) {
+Platform BuildPlatform(const PlatformFile& file, const std::filesystem::path& base_folder, const PluginLoader& loader) {
   Platform platform;
   platform.file = file.file();
   platform.plugin_name = file.plugin();

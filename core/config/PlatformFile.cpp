@@ -39,8 +39,7 @@ std::string KindOf(const YAML::Node& node) {
 
 // A list of numbers from a YAML sequence; throws ConfigError naming the first
 // element that is not a plain number.
-std::vector<double> ListOf(const YAML::Node& sequence, const std::string& file,
-                           const std::string& key, int line) {
+std::vector<double> ListOf(const YAML::Node& sequence, const std::string& file, const std::string& key, int line) {
   std::vector<double> numbers;
   numbers.reserve(sequence.size());
   for (std::size_t i = 0; i < sequence.size(); ++i) {
@@ -54,8 +53,7 @@ std::vector<double> ListOf(const YAML::Node& sequence, const std::string& file,
     } else {
       const int element_line = LineOf(element);
       throw ConfigError(file, element_line > 0 ? element_line : line, key,
-                        "expected a list of numbers, but element " + std::to_string(i + 1) +
-                            " is " + KindOf(element));
+                        "expected a list of numbers, but element " + std::to_string(i + 1) + " is " + KindOf(element));
     }
   }
   return numbers;
@@ -63,8 +61,7 @@ std::vector<double> ListOf(const YAML::Node& sequence, const std::string& file,
 
 // The value of a leaf (non-map) node; throws ConfigError when it is empty or
 // a list of something other than numbers.
-ParameterValue ValueOf(const YAML::Node& node, const std::string& file, const std::string& key,
-                       int line) {
+ParameterValue ValueOf(const YAML::Node& node, const std::string& file, const std::string& key, int line) {
   if (node.IsNull()) throw ConfigError(file, line, key, "no value given");
   if (node.IsSequence()) return ListOf(node, file, key, line);
   if (IsForcedString(node)) return node.Scalar();
@@ -88,8 +85,7 @@ void CollectOverrides(const YAML::Node& map, const std::string& prefix, const st
     const YAML::Node value_node = it->second;
     const int line = LineOf(key_node);
     if (!key_node.IsScalar() || key_node.Scalar().empty()) {
-      throw ConfigError(file, line, prefix, "a parameter name must be a plain word, got " +
-                                                KindOf(key_node));
+      throw ConfigError(file, line, prefix, "a parameter name must be a plain word, got " + KindOf(key_node));
     }
     const std::string key = prefix.empty() ? key_node.Scalar() : prefix + "." + key_node.Scalar();
     for (const YAML::Node& group : *groups) {
@@ -105,8 +101,7 @@ void CollectOverrides(const YAML::Node& map, const std::string& prefix, const st
     ParameterValue value = ValueOf(value_node, file, key, line);
     const auto [previous, inserted] = first_line->emplace(key, line);
     if (!inserted) {
-      throw ConfigError(file, line, key,
-                        "set twice (first on line " + std::to_string(previous->second) + ")");
+      throw ConfigError(file, line, key, "set twice (first on line " + std::to_string(previous->second) + ")");
     }
     if (out->size() == kMaxOverrides) {
       throw ConfigError(file, line, key,
@@ -153,10 +148,9 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
     }
     if (!root.IsMap()) {
       throw ConfigError(file, LineOf(root), "",
-                        "expected a map with the keys 'plugin' and 'parameters', got " +
-                            KindOf(root));
+                        "expected a map with the keys 'plugin' and 'parameters', got " + KindOf(root));
     }
-    std::map<std::string, int> top_lines;  // top-level key -> first line
+    std::map<std::string, int> top_lines;        // top-level key -> first line
     std::map<std::string, int> parameter_lines;  // dotted key -> first line
     std::map<std::string, int> mapper_lines;     // the same for `mapper:`
     for (auto it = root.begin(); it != root.end(); ++it) {
@@ -165,19 +159,16 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
       const int line = LineOf(key_node);
       const std::string key = key_node.IsScalar() ? key_node.Scalar() : std::string();
       if (key != "plugin" && key != "parameters" && key != "mapper") {
-        throw ConfigError(file, line, key,
-                          "unknown top-level key; expected 'plugin', 'parameters' or 'mapper'");
+        throw ConfigError(file, line, key, "unknown top-level key; expected 'plugin', 'parameters' or 'mapper'");
       }
       const auto [previous, inserted] = top_lines.emplace(key, line);
       if (!inserted) {
-        throw ConfigError(file, line, key,
-                          "set twice (first on line " + std::to_string(previous->second) + ")");
+        throw ConfigError(file, line, key, "set twice (first on line " + std::to_string(previous->second) + ")");
       }
       if (key == "plugin") {
         if (!value_node.IsScalar() || value_node.Scalar().empty()) {
           throw ConfigError(file, line, key,
-                            "expected a payload name or a plugin library path, got " +
-                                KindOf(value_node));
+                            "expected a payload name or a plugin library path, got " + KindOf(value_node));
         }
         result.plugin_ = value_node.Scalar();
         result.plugin_line_ = line;
@@ -192,16 +183,14 @@ PlatformFile PlatformFile::Parse(const std::string& yaml_text, const std::string
         for (ParameterOverride& setting : result.mapper_settings_) setting.key.erase(0, key.size() + 1);
       } else if (!value_node.IsNull()) {  // `parameters:` with nothing under it overrides nothing
         if (!value_node.IsMap()) {
-          throw ConfigError(file, line, key,
-                            "expected a map of parameter overrides, got " + KindOf(value_node));
+          throw ConfigError(file, line, key, "expected a map of parameter overrides, got " + KindOf(value_node));
         }
         std::vector<YAML::Node> groups;
         CollectOverrides(value_node, "", file, &result.overrides_, &parameter_lines, &groups);
       }
     }
     if (top_lines.count("plugin") == 0) {
-      throw ConfigError(file, 0, "plugin",
-                        "missing 'plugin': name the payload plugin or its library path");
+      throw ConfigError(file, 0, "plugin", "missing 'plugin': name the payload plugin or its library path");
     }
   } catch (const YAML::Exception& e) {
     throw ConfigError(file, LineOf(e.mark), "", "YAML syntax error: " + e.msg);

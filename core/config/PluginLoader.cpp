@@ -35,8 +35,7 @@ bool StartsWith(const std::string& text, const std::string& prefix) {
 
 // True when text ends with suffix.
 bool EndsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // True for an existing regular file (or a symlink to one); never throws.
@@ -143,16 +142,16 @@ LoadedPlugin PluginLoader::Load(const std::string& name_or_path) const {
   }
 
   if (!library->has(kAbiSymbol)) {
-    throw NotAPluginError(quoted + " is not a unimap payload plugin: it does not export " +
-                          kAbiSymbol + " (build it with UNIMAP_EXPORT_PAYLOAD_PLUGIN)");
+    throw NotAPluginError(quoted + " is not a unimap payload plugin: it does not export " + kAbiSymbol +
+                          " (build it with UNIMAP_EXPORT_PAYLOAD_PLUGIN)");
   }
   const std::uint32_t abi_version = library->get<const std::uint32_t>(kAbiSymbol);
   if (abi_version != kPayloadAbiVersion) {
     throw AbiMismatchError(file.string(), abi_version, kPayloadAbiVersion);
   }
   if (!library->has(kFactoryAlias)) {
-    throw NotAPluginError(quoted + " is not a unimap payload plugin: it does not export the factory " +
-                          kFactoryAlias + " (build it with UNIMAP_EXPORT_PAYLOAD_PLUGIN)");
+    throw NotAPluginError(quoted + " is not a unimap payload plugin: it does not export the factory " + kFactoryAlias +
+                          " (build it with UNIMAP_EXPORT_PAYLOAD_PLUGIN)");
   }
   PayloadPluginFactory& factory = library->get_alias<PayloadPluginFactory>(kFactoryAlias);
 
@@ -162,8 +161,7 @@ LoadedPlugin PluginLoader::Load(const std::string& name_or_path) const {
   } catch (const std::exception& e) {
     throw PluginFactoryError("the factory of plugin " + quoted + " threw: " + e.what());
   } catch (...) {
-    throw PluginFactoryError("the factory of plugin " + quoted +
-                             " threw something that is not a std::exception");
+    throw PluginFactoryError("the factory of plugin " + quoted + " threw something that is not a std::exception");
   }
   if (!created) {
     throw PluginFactoryError("the factory of plugin " + quoted + " returned no plugin (nullptr)");
@@ -175,11 +173,10 @@ LoadedPlugin PluginLoader::Load(const std::string& name_or_path) const {
   // The deleter owns a reference to the library and drops it only after the
   // object is destroyed: the code of the object's destructor (and of every
   // virtual method) stays mapped while any copy of the shared_ptr lives.
-  loaded.plugin = std::shared_ptr<PayloadPlugin>(
-      created.release(), [library](PayloadPlugin* object) mutable {
-        delete object;
-        library.reset();
-      });
+  loaded.plugin = std::shared_ptr<PayloadPlugin>(created.release(), [library](PayloadPlugin* object) mutable {
+    delete object;
+    library.reset();
+  });
   return loaded;
 }
 

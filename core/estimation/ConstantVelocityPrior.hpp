@@ -21,11 +21,11 @@ class ConstantVelocityPrior final : public MotionPrior {
 
  private:
   MotionPriorOptions options_;
-  int observed_ = 0;                                     // poses observed (saturates at 2)
-  double last_time_s_ = 0.0;                             // time of the last observed pose
+  int observed_ = 0;          // poses observed (saturates at 2)
+  double last_time_s_ = 0.0;  // time of the last observed pose
   Eigen::Isometry3d T_world_last_ = Eigen::Isometry3d::Identity();
-  Eigen::Vector3d velocity_body_m_s_ = Eigen::Vector3d::Zero();   // linear velocity, body frame
-  Eigen::Vector3d rate_body_rad_s_ = Eigen::Vector3d::Zero();     // angular velocity, body frame
+  Eigen::Vector3d velocity_body_m_s_ = Eigen::Vector3d::Zero();  // linear velocity, body frame
+  Eigen::Vector3d rate_body_rad_s_ = Eigen::Vector3d::Zero();    // angular velocity, body frame
 };
 
 }  // namespace unimap::estimation

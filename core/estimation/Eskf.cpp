@@ -19,8 +19,7 @@ const int kPoseRows[6] = {kP, kP + 1, kP + 2, kTheta, kTheta + 1, kTheta + 2};
 Matrix15d InitialCovariance(const EskfOptions& o) {
   Vector15d sigma;
   sigma << Eigen::Vector3d::Constant(o.initial_sigma_position_m),
-      Eigen::Vector3d::Constant(o.initial_sigma_velocity_m_s),
-      Eigen::Vector3d::Constant(o.initial_sigma_attitude_rad),
+      Eigen::Vector3d::Constant(o.initial_sigma_velocity_m_s), Eigen::Vector3d::Constant(o.initial_sigma_attitude_rad),
       Eigen::Vector3d::Constant(o.initial_sigma_accel_bias_m_s2),
       Eigen::Vector3d::Constant(o.initial_sigma_gyro_bias_rad_s);
   return sigma.array().square().matrix().asDiagonal();
@@ -173,7 +172,8 @@ void Eskf::PredictPose(double time_s, const Eigen::Isometry3d& T_prev_next, cons
 }
 
 void Eskf::SetImuNoise(double sigma_accel_m_s2, double sigma_gyro_rad_s) {
-  if (!(sigma_accel_m_s2 > 0.0) || !(sigma_gyro_rad_s > 0.0)) throw std::invalid_argument("Eskf: IMU sigmas must be > 0");
+  if (!(sigma_accel_m_s2 > 0.0) || !(sigma_gyro_rad_s > 0.0))
+    throw std::invalid_argument("Eskf: IMU sigmas must be > 0");
   options_.sigma_accel_m_s2 = sigma_accel_m_s2;
   options_.sigma_gyro_rad_s = sigma_gyro_rad_s;
 }

@@ -15,9 +15,9 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 // Outcome of one pose update.
 struct PoseUpdateResult {
-  bool applied = false;          // false: the innovation covariance was not positive definite
+  bool applied = false;                          // false: the innovation covariance was not positive definite
   Vector6d error_correction = Vector6d::Zero();  // [dp, dtheta] injected into the nominal state
-  double mahalanobis_sq = 0.0;   // innovation' S^-1 innovation
+  double mahalanobis_sq = 0.0;                   // innovation' S^-1 innovation
   Matrix6d pose_covariance_before_reset = Matrix6d::Zero();  // posterior [dp, dtheta] covariance
 };
 

@@ -9,9 +9,9 @@ namespace unimap::estimation {
 
 // A relative body motion and its uncertainty.
 struct MotionPrediction {
-  bool ok = false;     // false: no prediction (see reason)
-  std::string reason;  // why not
-  Eigen::Isometry3d T_prev_next = Eigen::Isometry3d::Identity();  // body at t1 in the body frame at t0
+  bool ok = false;                                                               // false: no prediction (see reason)
+  std::string reason;                                                            // why not
+  Eigen::Isometry3d T_prev_next = Eigen::Isometry3d::Identity();                 // body at t1 in the body frame at t0
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  // of [dp, dtheta], body frame at t0
 };
 

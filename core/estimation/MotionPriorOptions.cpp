@@ -5,9 +5,10 @@
 namespace unimap::estimation {
 
 bool MotionPriorOptions::IsValid(std::string* why) const {
-  const double values[] = {odometry_sigma_per_m, odometry_sigma_rad_per_rad, odometry_sigma_rad_per_m,
-                           odometry_min_sigma_m, odometry_min_sigma_rad,      velocity_sigma_m_s,
-                           rate_sigma_rad_s,     max_speed_m_s,               max_rate_rad_s};
+  const double values[] = {
+      odometry_sigma_per_m,   odometry_sigma_rad_per_rad, odometry_sigma_rad_per_m, odometry_min_sigma_m,
+      odometry_min_sigma_rad, velocity_sigma_m_s,         rate_sigma_rad_s,         max_speed_m_s,
+      max_rate_rad_s};
   for (double v : values) {
     if (!(v >= 0.0) || !std::isfinite(v)) {
       if (why != nullptr) *why = "motion prior sigmas must be finite and >= 0";

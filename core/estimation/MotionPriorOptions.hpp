@@ -16,19 +16,19 @@ enum class MotionSource {
 
 // Noise of the motion priors used without an IMU.
 struct MotionPriorOptions {
-  MotionSource source = MotionSource::kImu;      // see MotionSource
-  double odometry_sigma_per_m = 0.05;            // wheel odometry: position sigma per metre travelled
-  double odometry_sigma_rad_per_rad = 0.05;      // wheel odometry: rotation sigma per radian turned
-  double odometry_sigma_rad_per_m = 0.005;       // wheel odometry: rotation sigma per metre travelled
-  double odometry_min_sigma_m = 0.005;           // wheel odometry: position sigma floor per step (m)
-  double odometry_min_sigma_rad = 0.002;         // wheel odometry: rotation sigma floor per step (rad)
-  double max_odometry_gap_s = 0.5;               // an odometry gap longer than this around a scan: no prediction
-  double velocity_sigma_m_s = 1.0;               // constant velocity: unmodelled velocity change (m/s; 1 m/s
-                                                 // per 0.1 s sweep is a car braking or speeding up at 1 g)
-  double rate_sigma_rad_s = 0.2;                 // constant velocity: unmodelled angular-rate change (rad/s)
-  double max_speed_m_s = 15.0;                   // constant velocity, before a velocity is known: the fastest
-                                                 // expected speed, the prediction's spread (m/s)
-  double max_rate_rad_s = 1.0;                   // ... and turn rate (rad/s)
+  MotionSource source = MotionSource::kImu;  // see MotionSource
+  double odometry_sigma_per_m = 0.05;        // wheel odometry: position sigma per metre travelled
+  double odometry_sigma_rad_per_rad = 0.05;  // wheel odometry: rotation sigma per radian turned
+  double odometry_sigma_rad_per_m = 0.005;   // wheel odometry: rotation sigma per metre travelled
+  double odometry_min_sigma_m = 0.005;       // wheel odometry: position sigma floor per step (m)
+  double odometry_min_sigma_rad = 0.002;     // wheel odometry: rotation sigma floor per step (rad)
+  double max_odometry_gap_s = 0.5;           // an odometry gap longer than this around a scan: no prediction
+  double velocity_sigma_m_s = 1.0;           // constant velocity: unmodelled velocity change (m/s; 1 m/s
+                                             // per 0.1 s sweep is a car braking or speeding up at 1 g)
+  double rate_sigma_rad_s = 0.2;             // constant velocity: unmodelled angular-rate change (rad/s)
+  double max_speed_m_s = 15.0;               // constant velocity, before a velocity is known: the fastest
+                                             // expected speed, the prediction's spread (m/s)
+  double max_rate_rad_s = 1.0;               // ... and turn rate (rad/s)
 
   // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
   void VisitFields(options::FieldVisitor& v);

@@ -6,8 +6,7 @@
 
 namespace unimap::estimation {
 
-StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
-                                const StaticAlignmentOptions& options) {
+StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples, const StaticAlignmentOptions& options) {
   StaticAlignment out;
   if (static_cast<int>(samples.size()) < options.min_samples) {
     out.reason = "only " + std::to_string(samples.size()) + " IMU samples in the static window, need " +
@@ -34,8 +33,8 @@ StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples,
   out.accel_std_m_s2 = std::sqrt(var_a.sum() / (3.0 * n));
   out.gyro_std_rad_s = std::sqrt(var_w.sum() / (3.0 * n));
   if (std_a.maxCoeff() > options.max_accel_std_m_s2 || std_w.maxCoeff() > options.max_gyro_std_rad_s) {
-    out.reason = "IMU not static: accelerometer std " + std::to_string(std_a.maxCoeff()) +
-                 " m/s^2, gyroscope std " + std::to_string(std_w.maxCoeff()) + " rad/s";
+    out.reason = "IMU not static: accelerometer std " + std::to_string(std_a.maxCoeff()) + " m/s^2, gyroscope std " +
+                 std::to_string(std_w.maxCoeff()) + " rad/s";
     return out;
   }
   // At rest f = R^T (0, 0, g): the body sees world up along f.

@@ -24,9 +24,7 @@ void WheelOdometryPrior::AddOdometry(const OdometrySample& sample) {
   while (samples_.size() > 2 && samples_.front().time_s < sample.time_s - kKeepS) samples_.pop_front();
 }
 
-bool WheelOdometryPrior::ReadyFor(double time_s) const {
-  return !samples_.empty() && samples_.back().time_s >= time_s;
-}
+bool WheelOdometryPrior::ReadyFor(double time_s) const { return !samples_.empty() && samples_.back().time_s >= time_s; }
 
 bool WheelOdometryPrior::Interpolate(double time_s, Eigen::Isometry3d* T_odom_body) const {
   if (samples_.empty() || time_s < samples_.front().time_s || time_s > samples_.back().time_s) return false;

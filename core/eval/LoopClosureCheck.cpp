@@ -12,8 +12,8 @@ namespace {
 // The truth at time_s, interpolated; nothing outside its span.
 std::optional<Eigen::Isometry3d> TruthAt(const std::vector<StampedPose>& truth, double time_s) {
   if (truth.empty() || time_s < truth.front().time_s || time_s > truth.back().time_s) return std::nullopt;
-  const auto after = std::lower_bound(truth.begin(), truth.end(), time_s,
-                                      [](const StampedPose& p, double t) { return p.time_s < t; });
+  const auto after =
+      std::lower_bound(truth.begin(), truth.end(), time_s, [](const StampedPose& p, double t) { return p.time_s < t; });
   if (after == truth.begin()) return after->T_map_body;
   return InterpolatePose(*(after - 1), *after, time_s);
 }

@@ -19,12 +19,12 @@ struct ClaimedMotion {
 
 // Claimed motions held against the ground truth.
 struct LoopClosureCheck {
-  std::size_t checked = 0;              // claims with truth at both times
-  std::size_t false_closures = 0;       // off by more than a limit below
+  std::size_t checked = 0;         // claims with truth at both times
+  std::size_t false_closures = 0;  // off by more than a limit below
   double max_translation_error_m = 0.0;
   double max_rotation_error_deg = 0.0;
-  double false_translation_m = 1.0;     // limit: a claim off by more is a false closure
-  double false_rotation_deg = 5.0;      // limit: a claim turned by more is a false closure
+  double false_translation_m = 1.0;  // limit: a claim off by more is a false closure
+  double false_rotation_deg = 5.0;   // limit: a claim turned by more is a false closure
 };
 
 // Compares each claim with the truth's motion between its two times (truth

@@ -20,7 +20,7 @@ struct MetricRow {
 // value and its displayed row.
 struct ExtraMetric {
   nlohmann::ordered_json value;  // its metrics.json value (a number, or null)
-  MetricRow row;     // key, display value, meaning
+  MetricRow row;                 // key, display value, meaning
 };
 
 // Rows for every metrics.json key, in the same order, values rounded for

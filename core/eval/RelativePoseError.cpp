@@ -10,8 +10,8 @@
 
 namespace unimap::eval {
 
-RelativePoseError ComputeRelativePoseError(const TrajectoryAssociation& association,
-                                           const TrajectoryErrors& errors, double segment_m) {
+RelativePoseError ComputeRelativePoseError(const TrajectoryAssociation& association, const TrajectoryErrors& errors,
+                                           double segment_m) {
   if (!(segment_m > 0.0) || !std::isfinite(segment_m)) {
     throw InputError("segment length must be positive and finite (got " + std::to_string(segment_m) + ")");
   }
@@ -28,8 +28,7 @@ RelativePoseError ComputeRelativePoseError(const TrajectoryAssociation& associat
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     // j: first index with distance[j] - distance[i] >= segment_m (distance is non-decreasing).
     std::size_t j = static_cast<std::size_t>(
-        std::lower_bound(distance.begin() + static_cast<std::ptrdiff_t>(i), distance.end(),
-                         distance[i] + segment_m) -
+        std::lower_bound(distance.begin() + static_cast<std::ptrdiff_t>(i), distance.end(), distance[i] + segment_m) -
         distance.begin());
     while (j < pairs.size() && distance[j] - distance[i] < segment_m) ++j;
     while (j > i + 1 && distance[j - 1] - distance[i] >= segment_m) --j;

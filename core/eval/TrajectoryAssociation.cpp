@@ -49,11 +49,9 @@ Eigen::Isometry3d InterpolatePose(const StampedPose& a, const StampedPose& b, do
 }
 
 TrajectoryAssociation AssociateTrajectories(const std::vector<StampedPose>& estimate,
-                                            const std::vector<StampedPose>& truth,
-                                            const AssociationOptions& options) {
+                                            const std::vector<StampedPose>& truth, const AssociationOptions& options) {
   if (!(options.max_time_diff_s > 0.0) || !std::isfinite(options.max_time_diff_s)) {
-    throw InputError("max_time_diff_s must be positive and finite (got " +
-                     Describe(options.max_time_diff_s) + ")");
+    throw InputError("max_time_diff_s must be positive and finite (got " + Describe(options.max_time_diff_s) + ")");
   }
   Validate(estimate, "estimate");
   Validate(truth, "truth");

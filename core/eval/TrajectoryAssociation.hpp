@@ -18,8 +18,8 @@ struct AssociationOptions {
 
 // One estimate pose and the truth interpolated at its time.
 struct AssociatedPose {
-  double time_s = 0.0;                                          // the estimate's time stamp
-  Eigen::Isometry3d T_est_body = Eigen::Isometry3d::Identity();  // estimate, its own map frame
+  double time_s = 0.0;                                            // the estimate's time stamp
+  Eigen::Isometry3d T_est_body = Eigen::Isometry3d::Identity();   // estimate, its own map frame
   Eigen::Isometry3d T_true_body = Eigen::Isometry3d::Identity();  // truth (lerp / slerp), truth frame
 };
 

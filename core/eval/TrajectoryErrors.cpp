@@ -13,7 +13,8 @@ Eigen::Isometry3d AnchorTransform(const Eigen::Isometry3d& T_true_first, const E
   Eigen::Isometry3d T_true_est = Eigen::Isometry3d::Identity();
   T_true_est.linear() =
       Eigen::AngleAxisd(estimation::Heading(T_true_first.linear()) - estimation::Heading(T_est_first.linear()),
-                        Eigen::Vector3d::UnitZ()).toRotationMatrix();
+                        Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
   T_true_est.translation() = T_true_first.translation() - T_true_est.linear() * T_est_first.translation();
   return T_true_est;
 }

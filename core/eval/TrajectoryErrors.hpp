@@ -26,19 +26,19 @@ enum class Anchor {
 // truth frame so that it starts from the truth's first associated pose (see
 // Anchor; no fitting).
 struct PoseError {
-  double time_s = 0.0;      // estimate time stamp
-  double distance_m = 0.0;  // truth distance travelled since the first pair (along the pairs)
-  Eigen::Vector3d p_true = Eigen::Vector3d::Zero();      // truth position, truth frame
-  Eigen::Vector3d p_anchored = Eigen::Vector3d::Zero();  // anchored estimate position, truth frame
-  Eigen::Vector3d p_aligned = Eigen::Vector3d::Zero();   // Umeyama-aligned estimate position, truth frame
+  double time_s = 0.0;                               // estimate time stamp
+  double distance_m = 0.0;                           // truth distance travelled since the first pair (along the pairs)
+  Eigen::Vector3d p_true = Eigen::Vector3d::Zero();  // truth position, truth frame
+  Eigen::Vector3d p_anchored = Eigen::Vector3d::Zero();          // anchored estimate position, truth frame
+  Eigen::Vector3d p_aligned = Eigen::Vector3d::Zero();           // Umeyama-aligned estimate position, truth frame
   Eigen::Vector3d position_error_m = Eigen::Vector3d::Zero();    // p_anchored - p_true, truth-frame axes
   Eigen::Vector3d rotation_error_rad = Eigen::Vector3d::Zero();  // log(q_anch^-1 q_true) as a rotation vector
 };
 
 // The error series and the alignment used for the ATE.
 struct TrajectoryErrors {
-  std::vector<PoseError> poses;  // one per associated pair, same order
-  RigidAlignment alignment;      // estimate positions onto truth positions (ATE)
+  std::vector<PoseError> poses;                                         // one per associated pair, same order
+  RigidAlignment alignment;                                             // estimate positions onto truth positions (ATE)
   Eigen::Isometry3d T_true_est_anchor = Eigen::Isometry3d::Identity();  // the start anchor (AnchorTransform)
   std::optional<SimilarityAlignment> similarity;  // the same with scale (empty: no positive scale)
 };

@@ -11,8 +11,8 @@ namespace unimap::eval {
 
 // Options of EvaluateTrajectory.
 struct EvaluationOptions {
-  AssociationOptions association;  // time matching tolerance
-  double segment_m = 10.0;         // RPE segment length (travelled distance), > 0
+  AssociationOptions association;        // time matching tolerance
+  double segment_m = 10.0;               // RPE segment length (travelled distance), > 0
   Anchor anchor = Anchor::kYawPosition;  // how start-anchored errors place the estimate (TrajectoryErrors.hpp)
 };
 
@@ -26,8 +26,7 @@ struct TrajectoryEvaluation {
 // Associates, computes errors and metrics. Throws InputError when fewer than
 // two estimate poses can be associated ("do not overlap"), for invalid
 // options, and for invalid poses (see AssociateTrajectories).
-TrajectoryEvaluation EvaluateTrajectory(const std::vector<StampedPose>& estimate,
-                                        const std::vector<StampedPose>& truth,
+TrajectoryEvaluation EvaluateTrajectory(const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth,
                                         const EvaluationOptions& options = {});
 
 }  // namespace unimap::eval

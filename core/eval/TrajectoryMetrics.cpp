@@ -20,9 +20,8 @@ double PathLength(const std::vector<StampedPose>& poses) {
 
 }  // namespace
 
-TrajectoryMetrics ComputeTrajectoryMetrics(const TrajectoryAssociation& association,
-                                           const TrajectoryErrors& errors, double max_time_diff_s,
-                                           double segment_m) {
+TrajectoryMetrics ComputeTrajectoryMetrics(const TrajectoryAssociation& association, const TrajectoryErrors& errors,
+                                           double max_time_diff_s, double segment_m) {
   const std::vector<PoseError>& poses = errors.poses;
   if (poses.empty() || poses.size() != association.pairs.size()) {
     throw InputError("trajectory metrics need a non-empty error series matching the association");

@@ -33,8 +33,7 @@ double Rmse(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target, cons
 
 }  // namespace
 
-RigidAlignment AlignRigid(const std::vector<Eigen::Vector3d>& source,
-                          const std::vector<Eigen::Vector3d>& target) {
+RigidAlignment AlignRigid(const std::vector<Eigen::Vector3d>& source, const std::vector<Eigen::Vector3d>& target) {
   Eigen::Matrix3Xd s;
   Eigen::Matrix3Xd t;
   ToMatrices(source, target, &s, &t);

@@ -56,13 +56,13 @@ class BackgroundOptimizer {
   const PoseGraphOptions options_;
   const SolveFunction solve_;
   mutable std::mutex mutex_;
-  std::condition_variable job_ready_;  // worker: a job or stop
-  std::condition_variable idle_;       // Wait(): busy_ became false
-  std::optional<PoseGraph> job_;       // submitted, not yet picked up
+  std::condition_variable job_ready_;     // worker: a job or stop
+  std::condition_variable idle_;          // Wait(): busy_ became false
+  std::optional<PoseGraph> job_;          // submitted, not yet picked up
   std::optional<OptimizedPoses> result_;  // finished, not yet taken
-  bool busy_ = false;                  // a job is pending or running
-  bool stop_ = false;                  // the destructor asked the worker to end
-  std::thread worker_;                 // started last, in the constructor body
+  bool busy_ = false;                     // a job is pending or running
+  bool stop_ = false;                     // the destructor asked the worker to end
+  std::thread worker_;                    // started last, in the constructor body
 };
 
 }  // namespace unimap::graph

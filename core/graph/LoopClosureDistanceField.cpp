@@ -19,8 +19,8 @@ void CellRange(const Eigen::Vector3f& p, const Eigen::Vector3f& origin_m, float 
                const Eigen::Vector3i& dims, Eigen::Vector3i* lo, Eigen::Vector3i* hi) {
   for (int a = 0; a < 3; ++a) {
     (*lo)[a] = std::max(0, static_cast<int>(std::ceil((p[a] - clamp_m - origin_m[a]) * inv_resolution - 0.5f)));
-    (*hi)[a] = std::min(dims[a] - 1,
-                        static_cast<int>(std::floor((p[a] + clamp_m - origin_m[a]) * inv_resolution - 0.5f)));
+    (*hi)[a] =
+        std::min(dims[a] - 1, static_cast<int>(std::floor((p[a] + clamp_m - origin_m[a]) * inv_resolution - 0.5f)));
   }
 }
 
@@ -48,8 +48,8 @@ LoopClosureDistanceField::LoopClosureDistanceField(const std::vector<Eigen::Vect
     const double per_axis = std::ceil(cells / kBlockEdge);
     blocks *= per_axis;
     if (blocks > static_cast<double>(kMaxIndexBlocks)) {
-      throw InputError("LoopClosureDistanceField: the submap's box needs more than " +
-                       std::to_string(kMaxIndexBlocks) + " blocks at " + std::to_string(resolution_m) + " m");
+      throw InputError("LoopClosureDistanceField: the submap's box needs more than " + std::to_string(kMaxIndexBlocks) +
+                       " blocks at " + std::to_string(resolution_m) + " m");
     }
     block_dims_[a] = static_cast<int>(per_axis);
     dims_[a] = block_dims_[a] * kBlockEdge;
@@ -159,10 +159,9 @@ float LoopClosureDistanceField::Distance(const Eigen::Vector3f& p_submap, Eigen:
       if (gradient_submap != nullptr) gradient_submap->setZero();
       return clamp_m_;
     }
-    const std::uint8_t* base = &cells_[static_cast<std::size_t>(block) * kBlockCells +
-                                       static_cast<std::size_t>((((x & kLast) << kBlockShift) + (y & kLast)) *
-                                                                    kBlockEdge +
-                                                                (z & kLast))];
+    const std::uint8_t* base =
+        &cells_[static_cast<std::size_t>(block) * kBlockCells +
+                static_cast<std::size_t>((((x & kLast) << kBlockShift) + (y & kLast)) * kBlockEdge + (z & kLast))];
     for (int k = 0; k < 8; ++k) {
       c[k] = static_cast<float>(base[((k >> 2) * kBlockEdge + ((k >> 1) & 1)) * kBlockEdge + (k & 1)]) * step_m_;
     }
@@ -178,9 +177,9 @@ float LoopClosureDistanceField::Distance(const Eigen::Vector3f& p_submap, Eigen:
   if (gradient_submap != nullptr) {
     const float dz0 = (1.0f - ty) * (c[1] - c[0]) + ty * (c[3] - c[2]);
     const float dz1 = (1.0f - ty) * (c[5] - c[4]) + ty * (c[7] - c[6]);
-    *gradient_submap = Eigen::Vector3f((c1 - c0), (1.0f - tx) * (c01 - c00) + tx * (c11 - c10),
-                                       (1.0f - tx) * dz0 + tx * dz1) *
-                       inv_resolution_;
+    *gradient_submap =
+        Eigen::Vector3f((c1 - c0), (1.0f - tx) * (c01 - c00) + tx * (c11 - c10), (1.0f - tx) * dz0 + tx * dz1) *
+        inv_resolution_;
   }
   return c0 + tx * (c1 - c0);
 }

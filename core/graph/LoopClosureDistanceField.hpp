@@ -20,7 +20,7 @@ namespace unimap::graph {
 // safe to share between threads.
 class LoopClosureDistanceField {
  public:
-  static constexpr int kBlockShift = 3;                // blocks of 2^3 = 8 cells per axis
+  static constexpr int kBlockShift = 3;  // blocks of 2^3 = 8 cells per axis
   static constexpr int kBlockEdge = 1 << kBlockShift;
   static constexpr int kBlockCells = kBlockEdge * kBlockEdge * kBlockEdge;
   // Largest number of blocks in the dense block index; more is an InputError.
@@ -65,11 +65,11 @@ class LoopClosureDistanceField {
   // not null) receives its gradient (zero where every corner is clamped).
   float Distance(const Eigen::Vector3f& p_submap, Eigen::Vector3f* gradient_submap) const;
 
-  float resolution() const { return resolution_m_; }          // cell edge (m)
-  float clamp() const { return clamp_m_; }                    // largest stored distance (m)
-  const Eigen::Vector3f& origin() const { return origin_m_; }  // min corner of cell (0, 0, 0) (m)
+  float resolution() const { return resolution_m_; }                      // cell edge (m)
+  float clamp() const { return clamp_m_; }                                // largest stored distance (m)
+  const Eigen::Vector3f& origin() const { return origin_m_; }             // min corner of cell (0, 0, 0) (m)
   std::size_t BlockCount() const { return cells_.size() / kBlockCells; }  // stored blocks
-  std::size_t MemoryBytes() const {                           // bytes held (cells, points, block index)
+  std::size_t MemoryBytes() const {                                       // bytes held (cells, points, block index)
     return cells_.size() + (nearest_.size() + block_index_.size()) * sizeof(std::int32_t) +
            (points_.size() + normals_.size()) * sizeof(Eigen::Vector3f);
   }
@@ -80,13 +80,13 @@ class LoopClosureDistanceField {
   float clamp_m_;
   float step_m_;  // metres per 8-bit step
   Eigen::Vector3f origin_m_ = Eigen::Vector3f::Zero();
-  Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();         // cells per axis (multiples of kBlockEdge)
-  Eigen::Vector3i block_dims_ = Eigen::Vector3i::Zero();   // blocks per axis
-  std::vector<std::int32_t> block_index_;                  // block slot -> block number, -1 when not stored
-  std::vector<std::uint8_t> cells_;                        // kBlockCells codes per stored block
-  std::vector<std::int32_t> nearest_;                      // per stored cell: nearest point, -1 when none
-  std::vector<Eigen::Vector3f> points_;                    // the submap points
-  std::vector<Eigen::Vector3f> normals_;                   // their unit normals (zero: not planar)
+  Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();        // cells per axis (multiples of kBlockEdge)
+  Eigen::Vector3i block_dims_ = Eigen::Vector3i::Zero();  // blocks per axis
+  std::vector<std::int32_t> block_index_;                 // block slot -> block number, -1 when not stored
+  std::vector<std::uint8_t> cells_;                       // kBlockCells codes per stored block
+  std::vector<std::int32_t> nearest_;                     // per stored cell: nearest point, -1 when none
+  std::vector<Eigen::Vector3f> points_;                   // the submap points
+  std::vector<Eigen::Vector3f> normals_;                  // their unit normals (zero: not planar)
 
   static std::size_t LocalIndex(int x, int y, int z) {
     constexpr int kLast = kBlockEdge - 1;

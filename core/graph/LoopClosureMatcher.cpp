@@ -43,9 +43,8 @@ LoopClosureMatcher::LoopClosureMatcher(const std::vector<Eigen::Vector3f>& subma
   }
   grid_ = std::make_unique<SubmapMatchGrid>(submap_points, options.search_resolution_m, options.search_kernel_m,
                                             options.search_levels);
-  field_ = std::make_unique<LoopClosureDistanceField>(submap_points, options.fine_resolution_m,
-                                                      options.fine_clamp_m, options.normal_cell_m,
-                                                      options.planarity_ratio);
+  field_ = std::make_unique<LoopClosureDistanceField>(submap_points, options.fine_resolution_m, options.fine_clamp_m,
+                                                      options.normal_cell_m, options.planarity_ratio);
 }
 
 LoopClosureMatcher::~LoopClosureMatcher() = default;
@@ -143,8 +142,8 @@ LoopClosureResult LoopClosureMatcher::Match(const std::vector<Eigen::Vector3f>& 
     result.reason = Format("ambiguous: a distinct alignment explains nearly as much, ambiguity %.3f (max %.3f)",
                            result.ambiguity, options_.max_ambiguity);
   } else if (shift_m > search_radius_m + options_.search_resolution_m) {
-    result.reason = Format("best alignment %.2f m from the guess, outside the search radius %.2f m", shift_m,
-                           search_radius_m);
+    result.reason =
+        Format("best alignment %.2f m from the guess, outside the search radius %.2f m", shift_m, search_radius_m);
   } else if (position_sigma.maxCoeff() > options_.max_position_sigma_m ||
              rotation_sigma.maxCoeff() > options_.max_rotation_sigma_rad) {
     result.reason = Format("degenerate: position sigma %.3f m, rotation sigma %.4f rad", position_sigma.maxCoeff(),

@@ -27,7 +27,7 @@ struct LoopClosureResult {
                            // LoopClosureMatcher); 0 when the search left no distinct alternative
   Matrix6d covariance = Matrix6d::Identity();  // of T_submap_body, order [dp (submap frame), dtheta (body
                                                // frame, right)] as RelativePoseCost; SPD
-  int candidates = 0;      // search maxima refined
+  int candidates = 0;                          // search maxima refined
 };
 
 // Loop closure of a scan against a retired submap (docs/design.md 1.5):
@@ -68,8 +68,8 @@ class LoopClosureMatcher {
   // T_submap_body_guess. An empty scan (or too few points) gives
   // accepted = false with the reason. Throws unimap::InputError when the
   // guess is not finite or search_radius_m is negative or not finite.
-  LoopClosureResult Match(const std::vector<Eigen::Vector3f>& points_body,
-                          const Eigen::Isometry3d& T_submap_body_guess, double search_radius_m) const;
+  LoopClosureResult Match(const std::vector<Eigen::Vector3f>& points_body, const Eigen::Isometry3d& T_submap_body_guess,
+                          double search_radius_m) const;
 
   std::size_t MemoryBytes() const;  // approximate footprint of the grids (bytes)
   const LoopClosureOptions& options() const { return options_; }

@@ -34,9 +34,9 @@ std::vector<Eigen::Vector3f> LoopClosureNormals(const std::vector<Eigen::Vector3
   std::vector<Eigen::Vector3i> cells(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector3d p = points[i].cast<double>() - reference;
-    cells[i] = Eigen::Vector3i(static_cast<int>(std::floor(p.x() * inverse)),
-                               static_cast<int>(std::floor(p.y() * inverse)),
-                               static_cast<int>(std::floor(p.z() * inverse)));
+    cells[i] =
+        Eigen::Vector3i(static_cast<int>(std::floor(p.x() * inverse)), static_cast<int>(std::floor(p.y() * inverse)),
+                        static_cast<int>(std::floor(p.z() * inverse)));
     keys[i] = matching::VoxelCellKey(cells[i]);
     Moments& m = cubes[keys[i]];
     m.count += 1.0;

@@ -38,8 +38,7 @@ bool LoopClosureOptions::IsValid(std::string* why) const {
   if (!NonNegative(search_voxel_m) || !NonNegative(refine_voxel_m)) {
     return Fail(why, "search_voxel_m and refine_voxel_m must be >= 0");
   }
-  if (max_search_points < 10 || max_refine_points < 10 || min_scan_points < 1 ||
-      min_scan_points > max_refine_points) {
+  if (max_search_points < 10 || max_refine_points < 10 || min_scan_points < 1 || min_scan_points > max_refine_points) {
     return Fail(why,
                 "max_search_points and max_refine_points must be >= 10, min_scan_points in [1, max_refine_points]");
   }

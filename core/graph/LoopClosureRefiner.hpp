@@ -12,14 +12,14 @@ namespace unimap::graph {
 
 // Outcome of refining one pose.
 struct LoopClosureRefinement {
-  bool ok = false;          // false: no scan point near the submap surface (see reason)
+  bool ok = false;  // false: no scan point near the submap surface (see reason)
   std::string reason;
   Eigen::Isometry3d T_submap_body = Eigen::Isometry3d::Identity();  // refined pose
-  double score = 0.0;       // fraction of the points within inlier_distance_m of the surface
-  int inliers = 0;          // points within inlier_distance_m
+  double score = 0.0;                     // fraction of the points within inlier_distance_m of the surface
+  int inliers = 0;                        // points within inlier_distance_m
   std::vector<std::uint8_t> inlier_mask;  // per point, 1 when within inlier_distance_m (when ok)
-  int iterations = 0;       // Levenberg-Marquardt iterations run
-  double rms_m = 0.0;       // RMS plane residual of the inliers with a planar correspondence (m)
+  int iterations = 0;                     // Levenberg-Marquardt iterations run
+  double rms_m = 0.0;                     // RMS plane residual of the inliers with a planar correspondence (m)
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();  // see Refine
 };
 

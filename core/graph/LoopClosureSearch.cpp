@@ -148,8 +148,8 @@ LoopClosureSearch::LoopClosureSearch(const SubmapMatchGrid& grid, const LoopClos
     : grid_(grid), options_(options) {}
 
 std::vector<LoopClosureCandidate> LoopClosureSearch::Run(const std::vector<Eigen::Vector3f>& points_body,
-                                                         const Eigen::Isometry3d& T_submap_body_guess,
-                                                         double radius_m, LoopClosureSearchStats* stats) const {
+                                                         const Eigen::Isometry3d& T_submap_body_guess, double radius_m,
+                                                         LoopClosureSearchStats* stats) const {
   std::vector<LoopClosureCandidate> candidates;
   if (points_body.empty()) return candidates;
   const int n = static_cast<int>(points_body.size());

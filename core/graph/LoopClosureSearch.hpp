@@ -17,10 +17,10 @@ struct LoopClosureCandidate {
 
 // Work done by one search (for diagnostics and timing).
 struct LoopClosureSearchStats {
-  int yaw_steps = 0;            // yaw values searched
-  double yaw_step_rad = 0.0;    // spacing of the yaw values (rad)
-  std::size_t nodes = 0;        // branch-and-bound nodes scored (leaves included)
-  std::size_t leaves = 0;       // full-resolution translations scored
+  int yaw_steps = 0;          // yaw values searched
+  double yaw_step_rad = 0.0;  // spacing of the yaw values (rad)
+  std::size_t nodes = 0;      // branch-and-bound nodes scored (leaves included)
+  std::size_t leaves = 0;     // full-resolution translations scored
 };
 
 // Branch-and-bound search (Hess et al. 2016, Algorithm 3, depth-first with

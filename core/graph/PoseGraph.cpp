@@ -5,12 +5,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
 #include <ceres/types.h>
+#include <Eigen/Cholesky>
 
 #include "graph/RelativePoseCost.hpp"
 
@@ -62,8 +62,7 @@ Matrix6d SqrtInformationFromCovariance(const Matrix6d& covariance) {
   return information_llt.matrixU();
 }
 
-PoseGraph::Node PoseGraph::MakeNode(const Eigen::Vector3d& p_world_node,
-                                    const Eigen::Quaterniond& q_world_node) {
+PoseGraph::Node PoseGraph::MakeNode(const Eigen::Vector3d& p_world_node, const Eigen::Quaterniond& q_world_node) {
   Node node;
   node.p_world_node = p_world_node;
   node.q_world_node = q_world_node.normalized();
@@ -80,8 +79,7 @@ PoseGraph::Node PoseGraph::MakeNode(const Eigen::Isometry3d& T_world_node) {
 
 void PoseGraph::CheckNode(int node, const char* caller) const {
   if (node < 0 || static_cast<std::size_t>(node) >= nodes_.size()) {
-    throw std::invalid_argument(std::string("PoseGraph::") + caller + ": unknown node id " +
-                                std::to_string(node));
+    throw std::invalid_argument(std::string("PoseGraph::") + caller + ": unknown node id " + std::to_string(node));
   }
 }
 
@@ -148,9 +146,8 @@ OptimizationSummary PoseGraph::Optimize(const PoseGraphOptions& options) {
     Node& b = work[static_cast<std::size_t>(c.to_node)];
     ceres::LossFunction* loss = c.kind == ConstraintKind::kLoopClosure ? loop_closure_loss.get() : nullptr;
     loss_used = loss_used || loss != nullptr;
-    problem.AddResidualBlock(RelativePoseCost::Create(c.T_from_to, c.sqrt_information), loss,
-                             a.p_world_node.data(), a.q_world_node.coeffs().data(),
-                             b.p_world_node.data(), b.q_world_node.coeffs().data());
+    problem.AddResidualBlock(RelativePoseCost::Create(c.T_from_to, c.sqrt_information), loss, a.p_world_node.data(),
+                             a.q_world_node.coeffs().data(), b.p_world_node.data(), b.q_world_node.coeffs().data());
     problem.SetManifold(a.q_world_node.coeffs().data(), quaternion_manifold);
     problem.SetManifold(b.q_world_node.coeffs().data(), quaternion_manifold);
   }

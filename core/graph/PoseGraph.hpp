@@ -27,7 +27,7 @@ struct PoseConstraint {
   // `to`, q_ab = q_ab_meas Exp(dtheta)), equal to the rotation vector dtheta
   // for small errors (see RelativePoseCost).
   Matrix6d sqrt_information = Matrix6d::Identity();
-  ConstraintKind kind = ConstraintKind::kOdometry;              // source of the measurement
+  ConstraintKind kind = ConstraintKind::kOdometry;  // source of the measurement
 };
 
 // The square root of the information of a covariance in the same order as
@@ -70,8 +70,8 @@ class PoseGraph {
   // non-finite values).
   void SetPose(int node, const Eigen::Isometry3d& T_world_node);
 
-  std::size_t NodeCount() const;        // nodes added so far
-  std::size_t ConstraintCount() const;  // constraints added so far
+  std::size_t NodeCount() const;                           // nodes added so far
+  std::size_t ConstraintCount() const;                     // constraints added so far
   const std::vector<PoseConstraint>& constraints() const;  // in the order added
 
   // Minimises sum_c 0.5 rho_c(|r_c|^2) over the poses of the constrained
@@ -87,9 +87,9 @@ class PoseGraph {
  private:
   // One node: the Ceres parameters and the same pose as an isometry.
   struct Node {
-    Eigen::Vector3d p_world_node = Eigen::Vector3d::Zero();                 // position
-    Eigen::Quaterniond q_world_node = Eigen::Quaterniond::Identity();       // unit rotation
-    Eigen::Isometry3d T_world_node = Eigen::Isometry3d::Identity();         // from p and q
+    Eigen::Vector3d p_world_node = Eigen::Vector3d::Zero();            // position
+    Eigen::Quaterniond q_world_node = Eigen::Quaterniond::Identity();  // unit rotation
+    Eigen::Isometry3d T_world_node = Eigen::Isometry3d::Identity();    // from p and q
   };
   // A node from a finite pose (std::invalid_argument otherwise).
   static Node MakeNode(const Eigen::Isometry3d& T_world_node);

@@ -20,8 +20,7 @@ bool PoseGraphOptions::IsValid(std::string* why) const {
     return false;
   }
   if (!(function_tolerance >= 0.0) || !(gradient_tolerance >= 0.0) || !(parameter_tolerance >= 0.0) ||
-      !std::isfinite(function_tolerance) || !std::isfinite(gradient_tolerance) ||
-      !std::isfinite(parameter_tolerance)) {
+      !std::isfinite(function_tolerance) || !std::isfinite(gradient_tolerance) || !std::isfinite(parameter_tolerance)) {
     *why = "function_tolerance, gradient_tolerance and parameter_tolerance must be finite and >= 0";
     return false;
   }

@@ -23,14 +23,12 @@ class RelativePoseCost {
  public:
   // T_a_b_measured: measured pose of b in frame a; sqrt_information: 6x6,
   // order [translation xyz, rotation xyz].
-  RelativePoseCost(const Eigen::Isometry3d& T_a_b_measured,
-                   const Eigen::Matrix<double, 6, 6>& sqrt_information);
+  RelativePoseCost(const Eigen::Isometry3d& T_a_b_measured, const Eigen::Matrix<double, 6, 6>& sqrt_information);
 
   // Evaluates the residual above (6 values) for any scalar type (double or
   // ceres::Jet); always returns true.
   template <typename T>
-  bool operator()(const T* p_a_raw, const T* q_a_raw, const T* p_b_raw, const T* q_b_raw,
-                  T* residual_raw) const {
+  bool operator()(const T* p_a_raw, const T* q_a_raw, const T* p_b_raw, const T* q_b_raw, T* residual_raw) const {
     using Vector3T = Eigen::Matrix<T, 3, 1>;
     const Eigen::Map<const Vector3T> p_a(p_a_raw);
     const Eigen::Map<const Eigen::Quaternion<T>> q_a(q_a_raw);

@@ -41,8 +41,8 @@ SubmapMatchGrid::SubmapMatchGrid(const std::vector<Eigen::Vector3f>& points_subm
     const double n = std::ceil(extent_cells[a]) + 1.0;
     cells *= n;
     if (cells > static_cast<double>(kMaxCells)) {
-      throw InputError("SubmapMatchGrid: the submap's box needs more than " + std::to_string(kMaxCells) +
-                       " cells at " + std::to_string(resolution_m) + " m");
+      throw InputError("SubmapMatchGrid: the submap's box needs more than " + std::to_string(kMaxCells) + " cells at " +
+                       std::to_string(resolution_m) + " m");
     }
     dims_[a] = static_cast<int>(n);
   }
@@ -64,9 +64,9 @@ std::size_t SubmapMatchGrid::MemoryBytes() const {
 
 void SubmapMatchGrid::BuildBase(const std::vector<Eigen::Vector3f>& points_submap, double kernel_m) {
   std::vector<std::uint8_t>& base = levels_[0];
-  base.assign(static_cast<std::size_t>(dims_.x()) * static_cast<std::size_t>(dims_.y()) *
-                  static_cast<std::size_t>(dims_.z()),
-              0);
+  base.assign(
+      static_cast<std::size_t>(dims_.x()) * static_cast<std::size_t>(dims_.y()) * static_cast<std::size_t>(dims_.z()),
+      0);
   const double half = 0.5 * resolution_m_;
   const double inv_kernel = 1.0 / kernel_m;
   // Per axis: the cells whose box lies within kernel_m of the point, with
@@ -79,8 +79,8 @@ void SubmapMatchGrid::BuildBase(const std::vector<Eigen::Vector3f>& points_subma
     const Eigen::Vector3d p = pf.cast<double>();
     for (int a = 0; a < 3; ++a) {
       const int lo = std::max(0, static_cast<int>(std::floor((p[a] - kernel_m - origin_m_[a]) * inv_resolution_)));
-      const int hi = std::min(dims_[a] - 1,
-                              static_cast<int>(std::floor((p[a] + kernel_m - origin_m_[a]) * inv_resolution_)));
+      const int hi =
+          std::min(dims_[a] - 1, static_cast<int>(std::floor((p[a] + kernel_m - origin_m_[a]) * inv_resolution_)));
       first[a] = lo;
       count[a] = std::min(kMaxSpan, hi - lo + 1);
       for (int i = 0; i < count[a]; ++i) {

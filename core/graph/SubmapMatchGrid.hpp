@@ -28,8 +28,7 @@ class SubmapMatchGrid {
   // Builds the levels from submap points (submap frame, all finite, at least
   // one). resolution_m, kernel_m > 0; levels >= 1. Throws unimap::InputError
   // when the box needs more than kMaxCells cells.
-  SubmapMatchGrid(const std::vector<Eigen::Vector3f>& points_submap, double resolution_m, double kernel_m,
-                  int levels);
+  SubmapMatchGrid(const std::vector<Eigen::Vector3f>& points_submap, double resolution_m, double kernel_m, int levels);
 
   // Cell containing p (submap frame); may lie outside the grid.
   Eigen::Vector3i CellOf(const Eigen::Vector3d& p_submap) const {
@@ -44,9 +43,9 @@ class SubmapMatchGrid {
 
   int levels() const { return static_cast<int>(levels_.size()); }  // number of levels
   double resolution() const { return resolution_m_; }              // cell edge (m)
-  const Eigen::Vector3d& origin() const { return origin_m_; }       // min corner of cell (0, 0, 0), submap frame (m)
-  const Eigen::Vector3i& dims() const { return dims_; }             // cells per axis (padding included)
-  std::size_t MemoryBytes() const;                                  // bytes held by the levels
+  const Eigen::Vector3d& origin() const { return origin_m_; }      // min corner of cell (0, 0, 0), submap frame (m)
+  const Eigen::Vector3i& dims() const { return dims_; }            // cells per axis (padding included)
+  std::size_t MemoryBytes() const;                                 // bytes held by the levels
 
  private:
   double resolution_m_;

@@ -50,7 +50,8 @@ ConversionReport ConvertCarmen(const ConversionOptions& options) {
     report.notes.push_back(options.input.string() + ":" + std::to_string(line.line) + ": skipped: " + line.reason);
   }
   if (stats.truncated_input) {
-    report.notes.push_back(options.input.string() + ": compressed data ends early (file truncated); converted what was there");
+    report.notes.push_back(options.input.string() +
+                           ": compressed data ends early (file truncated); converted what was there");
   }
   return report;
 }

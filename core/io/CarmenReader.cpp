@@ -74,8 +74,8 @@ void CarmenReader::SetBeamLayout(std::size_t beams, double fov_rad, LineScan* sc
 
 void CarmenReader::CheckTime(double time_s) const {
   if (!(std::abs(time_s) <= options_.max_abs_time_s)) {
-    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s is beyond +-" + NumberString(options_.max_abs_time_s) +
-                     " s (not a plausible clock)"};
+    throw FieldError{"ipc timestamp " + NumberString(time_s) + " s is beyond +-" +
+                     NumberString(options_.max_abs_time_s) + " s (not a plausible clock)"};
   }
   if (has_last_time_ && time_s - last_time_s_ > options_.max_time_step_s) {
     throw FieldError{"ipc timestamp " + NumberString(time_s) + " s jumps " + NumberString(time_s - last_time_s_) +

@@ -27,24 +27,24 @@ struct CarmenReaderOptions {
   // A message stamped more than this after the previous one is a clock jump
   // (an InputError naming the line): the real logs step at most 3.5 s (intel.clf).
   double max_time_step_s = 60.0;
-  double max_abs_time_s = 1e10;             // |ipc timestamp| (1e10 s: the year 2286 in Unix time)
+  double max_abs_time_s = 1e10;  // |ipc timestamp| (1e10 s: the year 2286 in Unix time)
 };
 
 // One FLASER line: "FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_ts host logger_ts".
 struct CarmenLaser {
-  std::int64_t line = 0;               // line number in the log
-  LineScan scan;                       // start_time_s = ipc_ts, time_increment_s = 0 (unknown)
+  std::int64_t line = 0;                                   // line number in the log
+  LineScan scan;                                           // start_time_s = ipc_ts, time_increment_s = 0 (unknown)
   Eigen::Vector3d pose_xytheta = Eigen::Vector3d::Zero();  // x y theta: the laser pose the logger stored (m, m, rad)
-  OdometrySample odometry;             // odom_x odom_y odom_theta as a planar pose at ipc_ts
+  OdometrySample odometry;                                 // odom_x odom_y odom_theta as a planar pose at ipc_ts
 };
 
 // One ODOM line: "ODOM x y theta tv rv accel ipc_ts host logger_ts".
 struct CarmenOdometry {
-  std::int64_t line = 0;     // line number in the log
-  OdometrySample odometry;   // x y theta as a planar pose at ipc_ts
-  double tv_m_s = 0.0;       // translational velocity
-  double rv_rad_s = 0.0;     // rotational velocity
-  double accel_m_s2 = 0.0;   // acceleration
+  std::int64_t line = 0;    // line number in the log
+  OdometrySample odometry;  // x y theta as a planar pose at ipc_ts
+  double tv_m_s = 0.0;      // translational velocity
+  double rv_rad_s = 0.0;    // rotational velocity
+  double accel_m_s2 = 0.0;  // acceleration
 };
 
 // A message the reader delivers.
@@ -58,15 +58,15 @@ struct CarmenSkippedLine {
 
 // What the reader has seen so far.
 struct CarmenReaderStats {
-  std::size_t lines = 0;                               // lines read
-  std::size_t laser_scans = 0;                         // FLASER lines delivered
-  std::size_t odometry = 0;                            // ODOM lines delivered
-  std::size_t comments = 0;                            // '#' lines and blank lines
-  std::map<std::string, std::size_t> other_messages;   // message type -> lines skipped (PARAM, RLASER, ...)
-  std::map<std::string, std::size_t> skipped;          // reason -> lines skipped as damaged
-  std::vector<CarmenSkippedLine> skipped_lines;        // the first kMaxListedSkips damaged lines
-  bool truncated_input = false;                        // the compressed data ended before its end marker
-  static constexpr std::size_t kMaxListedSkips = 20;   // cap of skipped_lines
+  std::size_t lines = 0;                              // lines read
+  std::size_t laser_scans = 0;                        // FLASER lines delivered
+  std::size_t odometry = 0;                           // ODOM lines delivered
+  std::size_t comments = 0;                           // '#' lines and blank lines
+  std::map<std::string, std::size_t> other_messages;  // message type -> lines skipped (PARAM, RLASER, ...)
+  std::map<std::string, std::size_t> skipped;         // reason -> lines skipped as damaged
+  std::vector<CarmenSkippedLine> skipped_lines;       // the first kMaxListedSkips damaged lines
+  bool truncated_input = false;                       // the compressed data ended before its end marker
+  static constexpr std::size_t kMaxListedSkips = 20;  // cap of skipped_lines
 };
 
 // Streams a CARMEN log (.clf, or bzip2-compressed .clf.bz2), one message at
@@ -110,8 +110,8 @@ class CarmenReader {
   std::string line_;                        // current line text
   std::vector<std::string_view> fields_;    // current line split on blanks
   CarmenReaderStats stats_;
-  double last_time_s_ = 0.0;                // ipc timestamp of the previous message delivered
-  bool has_last_time_ = false;              // a message was delivered
+  double last_time_s_ = 0.0;    // ipc timestamp of the previous message delivered
+  bool has_last_time_ = false;  // a message was delivered
 };
 
 }  // namespace unimap::io

@@ -29,23 +29,23 @@ struct ConversionOptions {
   KittiReaderOptions kitti;       // side files of a KITTI sequence
   CarmenReaderOptions carmen;     // FLASER beam layout
   CarmenOdometrySource carmen_odometry = CarmenOdometrySource::kAuto;
-  RosbagReaderOptions rosbag;     // topic choice
+  RosbagReaderOptions rosbag;               // topic choice
   const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): stop reading, finish the dataset
 };
 
 // What a conversion wrote and left out.
 struct ConversionReport {
-  std::string payload;                        // payload written to metadata.yaml
-  std::size_t scans = 0;                      // records in scans.bin
-  std::size_t imu = 0;                        // IMU samples
-  std::size_t encoder = 0;                    // encoder samples
-  std::size_t odometry = 0;                   // odometry samples
-  std::size_t groundtruth = 0;                // ground-truth poses
-  std::size_t dropped_points = 0;             // scan points left out (non-finite)
-  std::map<std::string, std::size_t> skipped; // reason -> items (lines, messages) not converted
-  std::vector<std::string> notes;             // choices made (topics, calibration, odometry source)
-  bool interrupted = false;                   // stopped early by ConversionOptions::stop: the dataset
-                                              // holds what was read before
+  std::string payload;                         // payload written to metadata.yaml
+  std::size_t scans = 0;                       // records in scans.bin
+  std::size_t imu = 0;                         // IMU samples
+  std::size_t encoder = 0;                     // encoder samples
+  std::size_t odometry = 0;                    // odometry samples
+  std::size_t groundtruth = 0;                 // ground-truth poses
+  std::size_t dropped_points = 0;              // scan points left out (non-finite)
+  std::map<std::string, std::size_t> skipped;  // reason -> items (lines, messages) not converted
+  std::vector<std::string> notes;              // choices made (topics, calibration, odometry source)
+  bool interrupted = false;                    // stopped early by ConversionOptions::stop: the dataset
+                                               // holds what was read before
 };
 
 // Each reads `options.input` and writes `options.output`; throws InputError

@@ -40,9 +40,9 @@ DatasetLimits DatasetLimits::Unlimited() {
 }
 
 bool DatasetLimits::IsValid(std::string* why) const {
-  for (const double limit : {max_accel_m_s2, max_gyro_rad_s, max_encoder_angle_rad, max_position_m, max_abs_time_s,
-                             max_imu_step_s, max_encoder_step_s, max_scan_step_s, max_odometry_step_s,
-                             max_scan_duration_s}) {
+  for (const double limit :
+       {max_accel_m_s2, max_gyro_rad_s, max_encoder_angle_rad, max_position_m, max_abs_time_s, max_imu_step_s,
+        max_encoder_step_s, max_scan_step_s, max_odometry_step_s, max_scan_duration_s}) {
     if (!(limit > 0.0)) {
       if (why != nullptr) *why = "every dataset limit must be positive";
       return false;

@@ -24,11 +24,23 @@ constexpr int kFormatVersion = 1;  // the layout this build reads and writes
 constexpr std::size_t kMaxParameters = 10000;
 
 // Top-level keys in the order they are written.
-const char* const kKeys[] = {"format_version", "source", "payload", "scenario", "seed",
-                             "duration_s", "imu_rate_hz", "encoder_rate_hz", "scan_rate_hz",
-                             "gravity_m_s2", "sigma_accel_m_s2", "sigma_gyro_rad_s",
-                             "accel_bias_walk_m_s2_sqrt_s", "gyro_bias_walk_rad_s_sqrt_s",
-                             "range_noise_m", "encoder_resolution_rad", "payload_parameters"};
+const char* const kKeys[] = {"format_version",
+                             "source",
+                             "payload",
+                             "scenario",
+                             "seed",
+                             "duration_s",
+                             "imu_rate_hz",
+                             "encoder_rate_hz",
+                             "scan_rate_hz",
+                             "gravity_m_s2",
+                             "sigma_accel_m_s2",
+                             "sigma_gyro_rad_s",
+                             "accel_bias_walk_m_s2_sqrt_s",
+                             "gyro_bias_walk_rad_s_sqrt_s",
+                             "range_noise_m",
+                             "encoder_resolution_rad",
+                             "payload_parameters"};
 
 // The double fields of DatasetMetadata, by key.
 std::vector<std::pair<const char*, double DatasetMetadata::*>> DoubleFields() {
@@ -94,8 +106,7 @@ void EmitParameters(YAML::Emitter& out, const ParameterMap& parameters, const st
   for (const auto& [key, value] : values) {
     for (std::size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', dot + 1)) {
       if (values.count(key.substr(0, dot)) != 0) {
-        throw ConfigError(file, 0, key,
-                          "'" + key.substr(0, dot) + "' is both a value and a group of values");
+        throw ConfigError(file, 0, key, "'" + key.substr(0, dot) + "' is both a value and a group of values");
       }
     }
   }
@@ -124,9 +135,7 @@ void EmitParameters(YAML::Emitter& out, const ParameterMap& parameters, const st
 int LineOf(const YAML::Node& node) { return node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
 // Quotes or a !!str tag make a scalar a string whatever it reads.
-bool IsQuoted(const YAML::Node& node) {
-  return node.Tag() == "!" || node.Tag() == "tag:yaml.org,2002:str";
-}
+bool IsQuoted(const YAML::Node& node) { return node.Tag() == "!" || node.Tag() == "tag:yaml.org,2002:str"; }
 
 std::string KindOf(const YAML::Node& node) {
   if (node.IsMap()) return "a map";
@@ -151,8 +160,7 @@ ParameterValue TypedScalar(const std::string& text) {
   std::int64_t whole = 0;
   if (ParseInteger(text, &whole)) return whole;
   double real = 0.0;
-  if (text.find_first_not_of("0123456789+-.eE") == std::string::npos &&
-      ParseNumber(text, &real)) {
+  if (text.find_first_not_of("0123456789+-.eE") == std::string::npos && ParseNumber(text, &real)) {
     return real;
   }
   const std::string bare = text.empty() || (text[0] != '+' && text[0] != '-') ? text : text.substr(1);
@@ -169,8 +177,7 @@ ParameterValue TypedScalar(const std::string& text) {
 struct Parser {
   const std::string& file;
 
-  [[noreturn]] void Fail(const YAML::Node& node, const std::string& key,
-                         const std::string& reason) const {
+  [[noreturn]] void Fail(const YAML::Node& node, const std::string& key, const std::string& reason) const {
     throw ConfigError(file, LineOf(node), key, reason);
   }
   ParameterValue Leaf(const YAML::Node& value, const std::string& key) const {
@@ -180,15 +187,14 @@ struct Parser {
     std::vector<double> numbers;
     for (std::size_t i = 0; i < value.size(); ++i) {
       const YAML::Node element = value[i];
-      const ParameterValue parsed =
-          element.IsScalar() && !IsQuoted(element) ? TypedScalar(element.Scalar()) : false;
+      const ParameterValue parsed = element.IsScalar() && !IsQuoted(element) ? TypedScalar(element.Scalar()) : false;
       if (const auto* real = std::get_if<double>(&parsed)) {
         numbers.push_back(*real);
       } else if (const auto* integer = std::get_if<std::int64_t>(&parsed)) {
         numbers.push_back(static_cast<double>(*integer));
       } else {
-        Fail(element, key, "expected a list of numbers, but element " + std::to_string(i + 1) +
-                               " is " + KindOf(element));
+        Fail(element, key,
+             "expected a list of numbers, but element " + std::to_string(i + 1) + " is " + KindOf(element));
       }
     }
     return numbers;
@@ -213,10 +219,8 @@ struct Parser {
     groups->push_back(map);
     for (auto it = map.begin(); it != map.end(); ++it) {
       const YAML::Node key_node = it->first;
-      if (!key_node.IsScalar() || key_node.Scalar().empty() ||
-          key_node.Scalar().find('.') != std::string::npos) {
-        Fail(key_node, prefix, "a parameter name must be a plain word without '.', got " +
-                                   KindOf(key_node));
+      if (!key_node.IsScalar() || key_node.Scalar().empty() || key_node.Scalar().find('.') != std::string::npos) {
+        Fail(key_node, prefix, "a parameter name must be a plain word without '.', got " + KindOf(key_node));
       }
       const std::string key = prefix.empty() ? key_node.Scalar() : prefix + "." + key_node.Scalar();
       const auto [previous, inserted] = lines->emplace(key, LineOf(key_node));
@@ -224,8 +228,8 @@ struct Parser {
         Fail(key_node, key, "set twice (first on line " + std::to_string(previous->second) + ")");
       }
       if (lines->size() > kMaxParameters) {
-        Fail(key_node, key, "more than " + std::to_string(kMaxParameters) +
-                                " payload parameters (YAML aliases expanding?)");
+        Fail(key_node, key,
+             "more than " + std::to_string(kMaxParameters) + " payload parameters (YAML aliases expanding?)");
       }
       for (const YAML::Node& group : *groups) {
         if (it->second.is(group)) Fail(key_node, key, "a YAML alias refers to a group that contains it (a cycle)");
@@ -256,9 +260,8 @@ DatasetMetadata ParseDatasetMetadata(const std::string& yaml_text, const std::st
     }
     if (number > kFormatVersion) {
       parser.Fail(version, "format_version",
-                  "dataset format version " + std::to_string(number) +
-                      " is newer than this build reads (" + std::to_string(kFormatVersion) +
-                      "); update unimap");
+                  "dataset format version " + std::to_string(number) + " is newer than this build reads (" +
+                      std::to_string(kFormatVersion) + "); update unimap");
     }
     if (number < 1) parser.Fail(version, "format_version", "must be 1 or more");
     metadata.format_version = static_cast<int>(number);
@@ -273,14 +276,12 @@ DatasetMetadata ParseDatasetMetadata(const std::string& yaml_text, const std::st
       }
       const auto [previous, inserted] = seen.emplace(key, LineOf(key_node));
       if (!inserted) {
-        parser.Fail(key_node, key,
-                    "set twice (first on line " + std::to_string(previous->second) + ")");
+        parser.Fail(key_node, key, "set twice (first on line " + std::to_string(previous->second) + ")");
       }
       if (key == "source") metadata.source = parser.String(value, key);
       if (key == "payload") metadata.payload = parser.String(value, key);
       if (key == "scenario") metadata.scenario = parser.String(value, key);
-      if (key == "seed" &&
-          (!value.IsScalar() || IsQuoted(value) || !ParseInteger(value.Scalar(), &metadata.seed))) {
+      if (key == "seed" && (!value.IsScalar() || IsQuoted(value) || !ParseInteger(value.Scalar(), &metadata.seed))) {
         parser.Fail(value, key, "expected a whole number >= 0, got " + KindOf(value));
       }
       for (const auto& [name, field] : double_fields) {
@@ -295,8 +296,7 @@ DatasetMetadata ParseDatasetMetadata(const std::string& yaml_text, const std::st
     }
     if (seen.count("payload") == 0) throw ConfigError(file, 0, "payload", "missing");
   } catch (const YAML::Exception& e) {
-    throw ConfigError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
-                      "YAML syntax error: " + e.msg);
+    throw ConfigError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, "", "YAML syntax error: " + e.msg);
   }
   return metadata;
 }
@@ -317,8 +317,8 @@ void SaveDatasetMetadata(const DatasetMetadata& metadata, const std::filesystem:
   const std::string label = file.string();
   if (metadata.format_version != kFormatVersion) {
     throw ConfigError(label, 0, "format_version",
-                      "this build writes format version " + std::to_string(kFormatVersion) +
-                          ", not " + std::to_string(metadata.format_version));
+                      "this build writes format version " + std::to_string(kFormatVersion) + ", not " +
+                          std::to_string(metadata.format_version));
   }
   YAML::Emitter out;
   out << YAML::BeginMap;

@@ -10,23 +10,23 @@ namespace unimap::io {
 // metadata.yaml of a dataset folder (docs/dataset-format.md). Read and
 // written only by LoadDatasetMetadata / SaveDatasetMetadata.
 struct DatasetMetadata {
-  int format_version = 1;             // layout version of the folder; readers refuse newer ones
-  std::string source;                 // who wrote it: "unimap simulate", "kitti", "carmen", "rosbag", ...
-  std::string payload;                // payload plugin name the scans are for ("rotating_2d")
-  std::string scenario;               // simulated scenario name, empty for real data
-  std::uint64_t seed = 0;             // random seed of a simulation
-  double duration_s = 0.0;            // time span of the data
-  double imu_rate_hz = 0.0;           // 0: no IMU stream
-  double encoder_rate_hz = 0.0;       // 0: no encoder stream
-  double scan_rate_hz = 0.0;          // nominal scans per second
-  double gravity_m_s2 = 9.80665;      // magnitude of gravity in the world frame (along -z)
-  double sigma_accel_m_s2 = 0.0;      // accelerometer white noise per sample used (simulation)
-  double sigma_gyro_rad_s = 0.0;      // gyroscope white noise per sample used (simulation)
+  int format_version = 1;                    // layout version of the folder; readers refuse newer ones
+  std::string source;                        // who wrote it: "unimap simulate", "kitti", "carmen", "rosbag", ...
+  std::string payload;                       // payload plugin name the scans are for ("rotating_2d")
+  std::string scenario;                      // simulated scenario name, empty for real data
+  std::uint64_t seed = 0;                    // random seed of a simulation
+  double duration_s = 0.0;                   // time span of the data
+  double imu_rate_hz = 0.0;                  // 0: no IMU stream
+  double encoder_rate_hz = 0.0;              // 0: no encoder stream
+  double scan_rate_hz = 0.0;                 // nominal scans per second
+  double gravity_m_s2 = 9.80665;             // magnitude of gravity in the world frame (along -z)
+  double sigma_accel_m_s2 = 0.0;             // accelerometer white noise per sample used (simulation)
+  double sigma_gyro_rad_s = 0.0;             // gyroscope white noise per sample used (simulation)
   double accel_bias_walk_m_s2_sqrt_s = 0.0;  // accelerometer bias random walk (m/s^2 per sqrt(s))
   double gyro_bias_walk_rad_s_sqrt_s = 0.0;  // gyroscope bias random walk (rad/s per sqrt(s))
-  double range_noise_m = 0.0;         // LiDAR range noise sigma used (simulation)
-  double encoder_resolution_rad = 0.0;  // encoder quantisation step used (simulation), 0 = none
-  ParameterMap payload_parameters;    // the payload's effective parameters the data was made with
+  double range_noise_m = 0.0;                // LiDAR range noise sigma used (simulation)
+  double encoder_resolution_rad = 0.0;       // encoder quantisation step used (simulation), 0 = none
+  ParameterMap payload_parameters;           // the payload's effective parameters the data was made with
 };
 
 // Reads DIR/metadata.yaml; throws ConfigError naming the file, line and key

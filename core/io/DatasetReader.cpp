@@ -18,8 +18,7 @@ namespace {
 // Opens folder/name as T(path, args...) when the file exists; a missing
 // stream file is an empty stream.
 template <typename T, typename... Args>
-std::unique_ptr<T> OpenIfPresent(const std::filesystem::path& folder, const char* name,
-                                 Args... args) {
+std::unique_ptr<T> OpenIfPresent(const std::filesystem::path& folder, const char* name, Args... args) {
   std::error_code ec;
   if (!std::filesystem::exists(folder / name, ec)) return nullptr;
   return std::make_unique<T>(folder / name, args...);
@@ -33,8 +32,7 @@ class DatasetReader::Impl {
       : limits_(CheckedLimits(limits)),
         metadata_(LoadChecked(folder)),
         imu_(OpenIfPresent<NumberLineStream>(folder, layout::kImu, layout::kImuColumns)),
-        encoder_(OpenIfPresent<NumberLineStream>(folder, layout::kEncoder,
-                                                 layout::kEncoderColumns)),
+        encoder_(OpenIfPresent<NumberLineStream>(folder, layout::kEncoder, layout::kEncoderColumns)),
         odometry_(OpenIfPresent<NumberLineStream>(folder, layout::kOdometry, kTumColumns)),
         scans_(OpenIfPresent<ScanFileReader>(folder, layout::kScans)),
         groundtruth_(OpenIfPresent<NumberLineStream>(folder, layout::kGroundTruth, kTumColumns)) {
@@ -125,10 +123,9 @@ class DatasetReader::Impl {
     if (!encoder_ahead_) encoder_ahead_ = ReadEncoder();
     if (!odometry_ahead_) odometry_ahead_ = ReadOdometry();
     if (!scan_ahead_) scan_ahead_ = ReadScan();
-    const bool present[4] = {imu_ahead_.has_value(), encoder_ahead_.has_value(),
-                             odometry_ahead_.has_value(), scan_ahead_.has_value()};
-    const double time_s[4] = {imu_ahead_ ? imu_ahead_->time_s : 0.0,
-                              encoder_ahead_ ? encoder_ahead_->time_s : 0.0,
+    const bool present[4] = {imu_ahead_.has_value(), encoder_ahead_.has_value(), odometry_ahead_.has_value(),
+                             scan_ahead_.has_value()};
+    const double time_s[4] = {imu_ahead_ ? imu_ahead_->time_s : 0.0, encoder_ahead_ ? encoder_ahead_->time_s : 0.0,
                               odometry_ahead_ ? odometry_ahead_->time_s : 0.0,
                               scan_ahead_ ? ScanEndTime(*scan_ahead_) : 0.0};
     int best = -1;
@@ -141,8 +138,7 @@ class DatasetReader::Impl {
       case 1:
         return DatasetEvent(std::in_place_type<EncoderSample>, *std::exchange(encoder_ahead_, {}));
       case 2:
-        return DatasetEvent(std::in_place_type<OdometrySample>,
-                            *std::exchange(odometry_ahead_, {}));
+        return DatasetEvent(std::in_place_type<OdometrySample>, *std::exchange(odometry_ahead_, {}));
       case 3:
         return DatasetEvent(std::in_place_type<ScanRecord>, *std::exchange(scan_ahead_, {}));
       default:
@@ -193,9 +189,7 @@ bool DatasetReader::has_scans() {
   return impl_->scan_ahead_.has_value();
 }
 
-std::optional<ImuSample> DatasetReader::NextImu() {
-  return impl_->Take(&impl_->imu_ahead_, &Impl::ReadImu);
-}
+std::optional<ImuSample> DatasetReader::NextImu() { return impl_->Take(&impl_->imu_ahead_, &Impl::ReadImu); }
 
 std::optional<EncoderSample> DatasetReader::NextEncoder() {
   return impl_->Take(&impl_->encoder_ahead_, &Impl::ReadEncoder);
@@ -205,9 +199,7 @@ std::optional<OdometrySample> DatasetReader::NextOdometry() {
   return impl_->Take(&impl_->odometry_ahead_, &Impl::ReadOdometry);
 }
 
-std::optional<ScanRecord> DatasetReader::NextScan() {
-  return impl_->Take(&impl_->scan_ahead_, &Impl::ReadScan);
-}
+std::optional<ScanRecord> DatasetReader::NextScan() { return impl_->Take(&impl_->scan_ahead_, &Impl::ReadScan); }
 
 std::optional<StampedPose> DatasetReader::NextGroundTruth() { return impl_->ReadGroundTruth(); }
 

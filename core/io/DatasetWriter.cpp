@@ -25,11 +25,11 @@ std::string Text(double value) {
 
 // One output stream: its file, opened on the first item, and the time order.
 struct Stream {
-  const char* name;                   // file name in the folder
-  const char* header;                 // text header line; nullptr for scans.bin
-  std::optional<PartialFile> file;    // "<name>.partial" once an item was written
-  double last_time_s = 0.0;           // time of the previous item
-  bool has_last = false;              // an item was written
+  const char* name;                 // file name in the folder
+  const char* header;               // text header line; nullptr for scans.bin
+  std::optional<PartialFile> file;  // "<name>.partial" once an item was written
+  double last_time_s = 0.0;         // time of the previous item
+  bool has_last = false;            // an item was written
 };
 
 }  // namespace
@@ -43,19 +43,16 @@ class DatasetWriter::Impl {
   void CheckTime(Stream& stream, double time_s) {
     if (finished_) throw InputError(folder_.string() + ": write after DatasetWriter::Finish()");
     if (!std::isfinite(time_s)) {
-      throw InputError(folder_.string() + ": " + stream.name + ": time " + Text(time_s) +
-                       " is not finite");
+      throw InputError(folder_.string() + ": " + stream.name + ": time " + Text(time_s) + " is not finite");
     }
     if (stream.has_last && time_s < stream.last_time_s) {
-      throw InputError(folder_.string() + ": " + stream.name + ": time goes backwards: " +
-                       Text(time_s) + " s after " + Text(stream.last_time_s) +
-                       " s (every stream must be non-decreasing in time)");
+      throw InputError(folder_.string() + ": " + stream.name + ": time goes backwards: " + Text(time_s) + " s after " +
+                       Text(stream.last_time_s) + " s (every stream must be non-decreasing in time)");
     }
   }
 
   // Writes `bytes` as the stream's next item at `time_s` (span: [first, last]).
-  void Append(Stream& stream, double time_s, double first_s, double last_s,
-              const std::string& bytes) {
+  void Append(Stream& stream, double time_s, double first_s, double last_s, const std::string& bytes) {
     if (!stream.file) {
       stream.file.emplace(folder_ / stream.name);
       if (stream.header != nullptr) {
@@ -103,18 +100,18 @@ class DatasetWriter::Impl {
     SaveDatasetMetadata(metadata_, folder_ / layout::kMetadata);
   }
 
-  std::filesystem::path folder_;   // the dataset folder
-  DatasetMetadata metadata_;       // written by Finish()
+  std::filesystem::path folder_;  // the dataset folder
+  DatasetMetadata metadata_;      // written by Finish()
   Stream imu_{layout::kImu, layout::kImuHeader, {}};
   Stream encoder_{layout::kEncoder, layout::kEncoderHeader, {}};
   Stream odometry_{layout::kOdometry, layout::kPoseHeader, {}};
   Stream scans_{layout::kScans, nullptr, {}};
   Stream groundtruth_{layout::kGroundTruth, layout::kPoseHeader, {}};
-  std::string line_;               // reused text / record bytes
-  double min_time_s_ = 0.0;        // earliest time written (any stream)
-  double max_time_s_ = 0.0;        // latest time written (any stream)
-  bool has_time_ = false;          // anything was written
-  bool finished_ = false;          // Finish() was called
+  std::string line_;         // reused text / record bytes
+  double min_time_s_ = 0.0;  // earliest time written (any stream)
+  double max_time_s_ = 0.0;  // latest time written (any stream)
+  bool has_time_ = false;    // anything was written
+  bool finished_ = false;    // Finish() was called
 };
 
 DatasetWriter::DatasetWriter(const std::filesystem::path& folder, DatasetMetadata metadata)
@@ -138,8 +135,8 @@ void DatasetWriter::WriteImu(const ImuSample& sample) {
   std::string& line = impl_->line_;
   line.clear();
   AppendNumber(&line, sample.time_s);
-  for (const double value : {sample.accel_m_s2.x(), sample.accel_m_s2.y(), sample.accel_m_s2.z(),
-                             sample.gyro_rad_s.x(), sample.gyro_rad_s.y(), sample.gyro_rad_s.z()}) {
+  for (const double value : {sample.accel_m_s2.x(), sample.accel_m_s2.y(), sample.accel_m_s2.z(), sample.gyro_rad_s.x(),
+                             sample.gyro_rad_s.y(), sample.gyro_rad_s.z()}) {
     line.push_back(' ');
     AppendNumber(&line, value);
   }
@@ -176,8 +173,7 @@ void DatasetWriter::WriteScan(const ScanRecord& scan) {
   std::string& record = impl_->line_;
   record.clear();
   AppendScanRecord(&record, scan);
-  impl_->Append(impl_->scans_, end_time_s, std::min(ScanStartTime(scan), end_time_s), end_time_s,
-                record);
+  impl_->Append(impl_->scans_, end_time_s, std::min(ScanStartTime(scan), end_time_s), end_time_s, record);
 }
 
 void DatasetWriter::Finish() { impl_->Finish(); }

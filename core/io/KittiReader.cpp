@@ -60,7 +60,8 @@ fs::path FindSideFile(const std::vector<fs::path>& dirs, const std::vector<const
 // Frame number from a name like "000015": all digits, else std::nullopt.
 std::optional<std::size_t> FrameNumber(const fs::path& file) {
   const std::string stem = file.stem().string();
-  if (stem.empty() || stem.size() > 12 || !std::all_of(stem.begin(), stem.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+  if (stem.empty() || stem.size() > 12 ||
+      !std::all_of(stem.begin(), stem.end(), [](char c) { return c >= '0' && c <= '9'; })) {
     return std::nullopt;
   }
   return static_cast<std::size_t>(std::stoull(stem));
@@ -73,7 +74,8 @@ void LoadBinXyzi(const fs::path& file, std::vector<Eigen::Vector4f>* xyzi) {
   const auto bytes = fs::file_size(file, ec);
   if (ec) throw InputError(name + ": cannot read file size: " + ec.message());
   if (bytes % (4 * sizeof(float)) != 0) {
-    throw InputError(name + ": size " + std::to_string(bytes) + " bytes is not a multiple of 16 (float32 x y z reflectance)");
+    throw InputError(name + ": size " + std::to_string(bytes) +
+                     " bytes is not a multiple of 16 (float32 x y z reflectance)");
   }
   xyzi->resize(static_cast<std::size_t>(bytes / (4 * sizeof(float))));
   std::FILE* in = std::fopen(name.c_str(), "rb");
@@ -87,9 +89,9 @@ void LoadBinXyzi(const fs::path& file, std::vector<Eigen::Vector4f>* xyzi) {
 
 Eigen::Isometry3d KittiReader::DefaultTcamLidar() {
   // Sequence 00 calib.txt, "Tr:" (velodyne -> left camera).
-  const double v[12] = {4.276802385584e-04, -9.999672484946e-01, -8.084491683471e-03, -1.198459927713e-02,
-                        -7.210626507497e-03, 8.081198471645e-03, -9.999413164504e-01, -5.403984729748e-02,
-                        9.999738645903e-01,  4.859485810390e-04, -7.206933692422e-03, -2.921968648686e-01};
+  const double v[12] = {4.276802385584e-04,  -9.999672484946e-01, -8.084491683471e-03, -1.198459927713e-02,
+                        -7.210626507497e-03, 8.081198471645e-03,  -9.999413164504e-01, -5.403984729748e-02,
+                        9.999738645903e-01,  4.859485810390e-04,  -7.206933692422e-03, -2.921968648686e-01};
   return FromRowMajor3x4(v);
 }
 

@@ -23,10 +23,10 @@ struct KittiReaderOptions {
 
 // One scan of the sequence.
 struct KittiFrame {
-  std::size_t index = 0;          // frame number (from the file name, e.g. 000015.pcd -> 15)
-  std::filesystem::path file;     // the scan file
-  RawScan scan;                   // LiDAR frame; has_point_time false (see KittiReader::Read)
-  std::size_t dropped_points = 0; // non-finite points left out
+  std::size_t index = 0;           // frame number (from the file name, e.g. 000015.pcd -> 15)
+  std::filesystem::path file;      // the scan file
+  RawScan scan;                    // LiDAR frame; has_point_time false (see KittiReader::Read)
+  std::size_t dropped_points = 0;  // non-finite points left out
 };
 
 // Reads a KITTI odometry sequence: scans as `.bin` (float32 x y z
@@ -80,7 +80,7 @@ class KittiReader {
   std::vector<StampedPose> lidar_poses_;      // LiDAR pose per file (or empty)
   Eigen::Isometry3d T_cam_lidar_ = Eigen::Isometry3d::Identity();
   std::string calibration_source_;
-  std::size_t next_ = 0;                      // next file for Next()
+  std::size_t next_ = 0;  // next file for Next()
 };
 
 }  // namespace unimap::io

@@ -13,8 +13,7 @@ constexpr std::size_t kChunkBytes = std::size_t{64} << 10;  // bytes per read
 
 }  // namespace
 
-LineReader::LineReader(const std::filesystem::path& file)
-    : label_(file.string()), buffer_(kChunkBytes) {
+LineReader::LineReader(const std::filesystem::path& file) : label_(file.string()), buffer_(kChunkBytes) {
   file_ = std::fopen(label_.c_str(), "rb");
   if (file_ == nullptr) {
     throw InputError(label_ + ": cannot open for reading: " + std::strerror(errno));
@@ -32,9 +31,8 @@ bool LineReader::Fill() {
   }
   if (end_ == buffer_.size()) {
     if (buffer_.size() >= kMaxLineBytes) {
-      throw InputError(label_ + ":" + std::to_string(line_number_ + 1) +
-                       ": line longer than " + std::to_string(kMaxLineBytes) +
-                       " bytes (not a text file?)");
+      throw InputError(label_ + ":" + std::to_string(line_number_ + 1) + ": line longer than " +
+                       std::to_string(kMaxLineBytes) + " bytes (not a text file?)");
     }
     buffer_.resize(buffer_.size() * 2);
   }

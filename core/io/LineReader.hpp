@@ -37,14 +37,14 @@ class LineReader {
   // Reads more bytes after the unread ones; false at the end of the file.
   bool Fill();
 
-  std::string label_;            // path as given, for messages
-  std::FILE* file_ = nullptr;    // open stream, owned
-  std::vector<char> buffer_;     // bytes read but not yet returned live in [begin_, end_)
-  std::size_t begin_ = 0;        // first unread byte
-  std::size_t end_ = 0;          // one past the last byte read
-  std::size_t scanned_ = 0;      // bytes after begin_ already known to hold no '\n'
-  bool at_eof_ = false;          // the file has no more bytes
-  std::int64_t line_number_ = 0; // lines returned so far
+  std::string label_;             // path as given, for messages
+  std::FILE* file_ = nullptr;     // open stream, owned
+  std::vector<char> buffer_;      // bytes read but not yet returned live in [begin_, end_)
+  std::size_t begin_ = 0;         // first unread byte
+  std::size_t end_ = 0;           // one past the last byte read
+  std::size_t scanned_ = 0;       // bytes after begin_ already known to hold no '\n'
+  bool at_eof_ = false;           // the file has no more bytes
+  std::int64_t line_number_ = 0;  // lines returned so far
 };
 
 }  // namespace unimap::io

@@ -52,8 +52,7 @@ bool NumberLineStream::Next(double* values) {
       Fail("expected " + std::to_string(columns_) + " numbers, found more");
     }
     if (!ParseNumber(field, &values[count])) {
-      Fail("field " + std::to_string(count + 1) + " '" + std::string(field.substr(0, 40)) +
-           "' is not a number");
+      Fail("field " + std::to_string(count + 1) + " '" + std::string(field.substr(0, 40)) + "' is not a number");
     }
     ++count;
     pos = end;
@@ -70,8 +69,8 @@ bool NumberLineStream::Next(double* values) {
     Fail("time goes backwards: " + Text(time_s) + " s after " + Text(last_time_s_) + " s");
   }
   if (has_last_ && time_s - last_time_s_ > max_step_s_) {
-    Fail("time jumps " + Text(time_s - last_time_s_) + " s ahead (" + Text(time_s) + " s after " +
-         Text(last_time_s_) + " s), more than the " + Text(max_step_s_) +
+    Fail("time jumps " + Text(time_s - last_time_s_) + " s ahead (" + Text(time_s) + " s after " + Text(last_time_s_) +
+         " s), more than the " + Text(max_step_s_) +
          " s a sample may follow the previous one: a clock jump or lost data");
   }
   last_time_s_ = time_s;

@@ -31,12 +31,12 @@ class NumberLineStream {
   const std::string& label() const { return lines_.label(); }
 
  private:
-  LineReader lines_;            // the file, line by line
-  std::size_t columns_;         // numbers per row
+  LineReader lines_;                  // the file, line by line
+  std::size_t columns_;               // numbers per row
   double max_abs_time_s_ = HUGE_VAL;  // |time| of a row at most
   double max_step_s_ = HUGE_VAL;      // time after the previous row's at most
-  double last_time_s_ = 0.0;    // time of the previous row
-  bool has_last_ = false;       // a row was read already
+  double last_time_s_ = 0.0;          // time of the previous row
+  bool has_last_ = false;             // a row was read already
 };
 
 }  // namespace unimap::io

@@ -18,8 +18,7 @@ std::string Reason() { return std::strerror(errno); }
 
 }  // namespace
 
-PartialFile::PartialFile(std::filesystem::path final_path)
-    : final_path_(std::move(final_path)), buffer_(kBufferBytes) {
+PartialFile::PartialFile(std::filesystem::path final_path) : final_path_(std::move(final_path)), buffer_(kBufferBytes) {
   partial_path_ = final_path_;
   partial_path_ += kSuffix;
   stream_ = std::fopen(partial_path_.c_str(), "wb");
@@ -55,14 +54,12 @@ void PartialFile::Commit() {
   const std::string flush_reason = flushed ? std::string() : Reason();
   const bool closed = std::fclose(stream) == 0;
   if (!flushed || !closed) {
-    throw InputError(partial_path_.string() + ": cannot complete the file: " +
-                     (flushed ? Reason() : flush_reason));
+    throw InputError(partial_path_.string() + ": cannot complete the file: " + (flushed ? Reason() : flush_reason));
   }
   std::error_code ec;
   std::filesystem::rename(partial_path_, final_path_, ec);
   if (ec) {
-    throw InputError(partial_path_.string() + ": cannot rename to " + final_path_.string() +
-                     ": " + ec.message());
+    throw InputError(partial_path_.string() + ": cannot rename to " + final_path_.string() + ": " + ec.message());
   }
 }
 

@@ -11,8 +11,8 @@ namespace unimap::io {
 namespace {
 
 constexpr std::size_t kMaxHeaderBytes = std::size_t{64} << 10;  // real headers take ~250 bytes
-constexpr std::size_t kMaxFields = 4096;                         // far above any real cloud's
-constexpr std::uint64_t kMaxCount = std::uint64_t{1} << 20;      // values per field per point
+constexpr std::size_t kMaxFields = 4096;                        // far above any real cloud's
+constexpr std::uint64_t kMaxCount = std::uint64_t{1} << 20;     // values per field per point
 // LZF's best case: a 3-byte back reference expands to 264 bytes.
 constexpr std::uint64_t kLzfMaxExpansion = 88;
 
@@ -38,7 +38,8 @@ struct HeaderParser {
   std::vector<std::string> Words(std::istringstream& in, std::size_t expected, const char* keyword) const {
     std::vector<std::string> words;
     for (std::string word; in >> word;) {
-      if (words.size() == kMaxFields) Fail(std::string(keyword) + " has more than " + std::to_string(kMaxFields) + " entries");
+      if (words.size() == kMaxFields)
+        Fail(std::string(keyword) + " has more than " + std::to_string(kMaxFields) + " entries");
       words.push_back(word);
     }
     if (expected != 0 && words.size() != expected) {
@@ -143,8 +144,8 @@ PcdHeader ReadPcdHeader(const std::filesystem::path& file) {
   }
   if (!has_points) header.points = header.width * header.height;
   if (header.points != header.width * header.height) {
-    parser.Fail("POINTS " + std::to_string(header.points) + " is not WIDTH x HEIGHT = " +
-                std::to_string(header.width * header.height));
+    parser.Fail("POINTS " + std::to_string(header.points) +
+                " is not WIDTH x HEIGHT = " + std::to_string(header.width * header.height));
   }
   for (PcdField& field : header.fields) {
     if (field.type == 'F' && field.size != 4 && field.size != 8) {

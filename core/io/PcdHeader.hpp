@@ -11,11 +11,11 @@ namespace unimap::io {
 
 // One FIELDS entry of a PCD header.
 struct PcdField {
-  std::string name;       // e.g. "x"
-  std::size_t size = 4;   // bytes per value: 1, 2, 4 or 8
-  char type = 'F';        // 'F' float, 'I' signed, 'U' unsigned
-  std::size_t count = 1;  // values per point
-  std::size_t offset = 0; // bytes from the start of a binary point
+  std::string name;        // e.g. "x"
+  std::size_t size = 4;    // bytes per value: 1, 2, 4 or 8
+  char type = 'F';         // 'F' float, 'I' signed, 'U' unsigned
+  std::size_t count = 1;   // values per point
+  std::size_t offset = 0;  // bytes from the start of a binary point
 };
 
 // What the header says; every count is checked against its neighbours and

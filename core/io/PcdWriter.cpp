@@ -17,11 +17,16 @@ std::string Header(std::size_t points, PcdEncoding encoding) {
          "SIZE 4 4 4\n"
          "TYPE F F F\n"
          "COUNT 1 1 1\n"
-         "WIDTH " + n + "\n"
+         "WIDTH " +
+         n +
+         "\n"
          "HEIGHT 1\n"
          "VIEWPOINT 0 0 0 1 0 0 0\n"
-         "POINTS " + n + "\n"
-         "DATA " + (encoding == PcdEncoding::kBinary ? "binary" : "ascii") + "\n";
+         "POINTS " +
+         n +
+         "\n"
+         "DATA " +
+         (encoding == PcdEncoding::kBinary ? "binary" : "ascii") + "\n";
 }
 
 // Shortest text that reads back to the same float ("nan", "inf" for non-finite values).

@@ -27,11 +27,11 @@ constexpr std::size_t kChunkVertices = 4096;
 // What the header says about the vertex element.
 struct VertexLayout {
   Format format = Format::kAscii;
-  std::size_t count = 0;              // vertices announced
-  std::vector<Kind> kinds;            // one per property, in order
+  std::size_t count = 0;                  // vertices announced
+  std::vector<Kind> kinds;                // one per property, in order
   std::array<int, 3> xyz = {-1, -1, -1};  // property index of x, y, z
-  std::size_t stride = 0;             // bytes per binary vertex
-  std::size_t header_lines = 0;       // lines up to and including end_header
+  std::size_t stride = 0;                 // bytes per binary vertex
+  std::size_t header_lines = 0;           // lines up to and including end_header
 };
 
 [[noreturn]] void Fail(const std::filesystem::path& file, const std::string& reason) {
@@ -40,9 +40,9 @@ struct VertexLayout {
 
 bool KindOf(const std::string& name, Kind* kind) {
   static const std::pair<const char*, Kind> kNames[] = {
-      {"char", kInt8},     {"int8", kInt8},     {"uchar", kUint8},  {"uint8", kUint8},
-      {"short", kInt16},   {"int16", kInt16},   {"ushort", kUint16}, {"uint16", kUint16},
-      {"int", kInt32},     {"int32", kInt32},   {"uint", kUint32},  {"uint32", kUint32},
+      {"char", kInt8},     {"int8", kInt8},       {"uchar", kUint8},    {"uint8", kUint8},
+      {"short", kInt16},   {"int16", kInt16},     {"ushort", kUint16},  {"uint16", kUint16},
+      {"int", kInt32},     {"int32", kInt32},     {"uint", kUint32},    {"uint32", kUint32},
       {"float", kFloat32}, {"float32", kFloat32}, {"double", kFloat64}, {"float64", kFloat64}};
   for (const auto& entry : kNames) {
     if (name == entry.first) {
@@ -82,10 +82,14 @@ VertexLayout ReadHeader(const std::filesystem::path& file, std::istream& in) {
       std::string name, version;
       words >> name >> version;
       if (version != "1.0") Fail(file, "unsupported PLY version '" + version + "'");
-      if (name == "ascii") layout.format = Format::kAscii;
-      else if (name == "binary_little_endian") layout.format = Format::kLittleEndian;
-      else if (name == "binary_big_endian") layout.format = Format::kBigEndian;
-      else Fail(file, "unsupported PLY format '" + name + "'");
+      if (name == "ascii")
+        layout.format = Format::kAscii;
+      else if (name == "binary_little_endian")
+        layout.format = Format::kLittleEndian;
+      else if (name == "binary_big_endian")
+        layout.format = Format::kBigEndian;
+      else
+        Fail(file, "unsupported PLY format '" + name + "'");
       has_format = true;
     } else if (word == "element") {
       std::string count_text;
@@ -106,8 +110,8 @@ VertexLayout ReadHeader(const std::filesystem::path& file, std::istream& in) {
       if (type == "list") Fail(file, "PLY vertex element has a list property");
       if (!KindOf(type, &kind) || name.empty()) Fail(file, "bad PLY property line '" + line + "'");
       for (int axis = 0; axis < 3; ++axis) {
-        if (name == std::string(1, "xyz"[axis])) layout.xyz[static_cast<std::size_t>(axis)] =
-            static_cast<int>(layout.kinds.size());
+        if (name == std::string(1, "xyz"[axis]))
+          layout.xyz[static_cast<std::size_t>(axis)] = static_cast<int>(layout.kinds.size());
       }
       layout.kinds.push_back(kind);
       layout.stride += kBytes[kind];
@@ -127,12 +131,18 @@ double Decode(const unsigned char* bytes, Kind kind, Format format) {
     bits |= static_cast<std::uint64_t>(bytes[b]) << (8 * shift);
   }
   switch (kind) {
-    case kInt8: return static_cast<std::int8_t>(static_cast<std::uint8_t>(bits));
-    case kUint8: return static_cast<double>(bits);
-    case kInt16: return static_cast<std::int16_t>(static_cast<std::uint16_t>(bits));
-    case kUint16: return static_cast<double>(bits);
-    case kInt32: return static_cast<std::int32_t>(static_cast<std::uint32_t>(bits));
-    case kUint32: return static_cast<double>(bits);
+    case kInt8:
+      return static_cast<std::int8_t>(static_cast<std::uint8_t>(bits));
+    case kUint8:
+      return static_cast<double>(bits);
+    case kInt16:
+      return static_cast<std::int16_t>(static_cast<std::uint16_t>(bits));
+    case kUint16:
+      return static_cast<double>(bits);
+    case kInt32:
+      return static_cast<std::int32_t>(static_cast<std::uint32_t>(bits));
+    case kUint32:
+      return static_cast<double>(bits);
     case kFloat32: {
       const auto narrow = static_cast<std::uint32_t>(bits);
       float v = 0.0f;
@@ -158,9 +168,9 @@ void ReadBinary(const std::filesystem::path& file, std::istream& in, const Verte
     chunk.resize(n * layout.stride);
     in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(chunk.size()));
     if (static_cast<std::size_t>(in.gcount()) != chunk.size()) {
-      Fail(file, "PLY data ends after " + std::to_string(begin + static_cast<std::size_t>(in.gcount()) /
-                                                                     layout.stride) +
-                     " of " + std::to_string(layout.count) + " vertices");
+      Fail(file, "PLY data ends after " +
+                     std::to_string(begin + static_cast<std::size_t>(in.gcount()) / layout.stride) + " of " +
+                     std::to_string(layout.count) + " vertices");
     }
     for (std::size_t v = 0; v < n; ++v) {
       Eigen::Vector3f p;

@@ -13,7 +13,9 @@ std::string Header(std::size_t points) {
   return "ply\n"
          "format binary_little_endian 1.0\n"
          "comment written by unimap\n"
-         "element vertex " + std::to_string(points) + "\n"
+         "element vertex " +
+         std::to_string(points) +
+         "\n"
          "property float x\n"
          "property float y\n"
          "property float z\n"

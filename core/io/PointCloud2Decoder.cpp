@@ -17,11 +17,20 @@ constexpr std::uint8_t kInt8 = 1, kUint8 = 2, kInt16 = 3, kUint16 = 4, kInt32 = 
 
 std::size_t SizeOf(std::uint8_t datatype) {
   switch (datatype) {
-    case kInt8: case kUint8: return 1;
-    case kInt16: case kUint16: return 2;
-    case kInt32: case kUint32: case kFloat32: return 4;
-    case kFloat64: return 8;
-    default: return 0;
+    case kInt8:
+    case kUint8:
+      return 1;
+    case kInt16:
+    case kUint16:
+      return 2;
+    case kInt32:
+    case kUint32:
+    case kFloat32:
+      return 4;
+    case kFloat64:
+      return 8;
+    default:
+      return 0;
   }
 }
 
@@ -52,12 +61,18 @@ double LoadAs(const std::uint8_t* p, bool swap) {
 
 const char* ToString(PointTimeConvention convention) {
   switch (convention) {
-    case PointTimeConvention::kNone: return "none (times derived by the payload plugin)";
-    case PointTimeConvention::kSecondsAndNanoseconds: return "time_sec + time_nsec (absolute)";
-    case PointTimeConvention::kRelativeNanoseconds: return "integer ns after the header stamp";
-    case PointTimeConvention::kRelativeSeconds: return "float s after the header stamp";
-    case PointTimeConvention::kAbsoluteSeconds: return "float absolute s";
-    case PointTimeConvention::kAbsoluteNanoseconds: return "float absolute ns";
+    case PointTimeConvention::kNone:
+      return "none (times derived by the payload plugin)";
+    case PointTimeConvention::kSecondsAndNanoseconds:
+      return "time_sec + time_nsec (absolute)";
+    case PointTimeConvention::kRelativeNanoseconds:
+      return "integer ns after the header stamp";
+    case PointTimeConvention::kRelativeSeconds:
+      return "float s after the header stamp";
+    case PointTimeConvention::kAbsoluteSeconds:
+      return "float absolute s";
+    case PointTimeConvention::kAbsoluteNanoseconds:
+      return "float absolute ns";
   }
   return "unknown";
 }
@@ -71,9 +86,11 @@ PointCloud2Decoder::PointCloud2Decoder(const std::vector<CloudField>& fields, st
       for (const CloudField& f : fields) {
         if (f.name != name) continue;
         const std::size_t size = SizeOf(f.datatype);
-        if (size == 0) throw InputError("PointCloud2 field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
+        if (size == 0)
+          throw InputError("PointCloud2 field '" + f.name + "' has unknown datatype " + std::to_string(f.datatype));
         if (static_cast<std::size_t>(f.offset) + size > point_step) {
-          throw InputError("PointCloud2 field '" + f.name + "' does not fit in point_step " + std::to_string(point_step));
+          throw InputError("PointCloud2 field '" + f.name + "' does not fit in point_step " +
+                           std::to_string(point_step));
         }
         return Slot{static_cast<long>(f.offset), f.datatype};
       }
@@ -103,22 +120,32 @@ PointCloud2Decoder::PointCloud2Decoder(const std::vector<CloudField>& fields, st
 double PointCloud2Decoder::Read(const Slot& slot, const std::uint8_t* p) const {
   const std::uint8_t* at = p + slot.offset;
   switch (slot.datatype) {
-    case kInt8: return static_cast<double>(static_cast<std::int8_t>(*at));
-    case kUint8: return static_cast<double>(*at);
-    case kInt16: return LoadAs<std::int16_t>(at, swap_bytes_);
-    case kUint16: return LoadAs<std::uint16_t>(at, swap_bytes_);
-    case kInt32: return LoadAs<std::int32_t>(at, swap_bytes_);
-    case kUint32: return LoadAs<std::uint32_t>(at, swap_bytes_);
-    case kFloat32: return LoadAs<float>(at, swap_bytes_);
-    case kFloat64: return LoadAs<double>(at, swap_bytes_);
-    default: return std::numeric_limits<double>::quiet_NaN();
+    case kInt8:
+      return static_cast<double>(static_cast<std::int8_t>(*at));
+    case kUint8:
+      return static_cast<double>(*at);
+    case kInt16:
+      return LoadAs<std::int16_t>(at, swap_bytes_);
+    case kUint16:
+      return LoadAs<std::uint16_t>(at, swap_bytes_);
+    case kInt32:
+      return LoadAs<std::int32_t>(at, swap_bytes_);
+    case kUint32:
+      return LoadAs<std::uint32_t>(at, swap_bytes_);
+    case kFloat32:
+      return LoadAs<float>(at, swap_bytes_);
+    case kFloat64:
+      return LoadAs<double>(at, swap_bytes_);
+    default:
+      return std::numeric_limits<double>::quiet_NaN();
   }
 }
 
 CloudDecoding PointCloud2Decoder::Decode(const std::uint8_t* data, std::size_t size, std::uint32_t width,
                                          std::uint32_t height, std::uint32_t row_step, double header_stamp_s) const {
   const std::size_t row_bytes = static_cast<std::size_t>(width) * point_step_;
-  if (height > 0 && width > 0 && (row_step < row_bytes || static_cast<std::size_t>(row_step) * (height - 1) + row_bytes > size)) {
+  if (height > 0 && width > 0 &&
+      (row_step < row_bytes || static_cast<std::size_t>(row_step) * (height - 1) + row_bytes > size)) {
     throw InputError("PointCloud2 data (" + std::to_string(size) + " bytes) is shorter than " + std::to_string(width) +
                      "x" + std::to_string(height) + " points of " + std::to_string(point_step_) + " bytes need");
   }

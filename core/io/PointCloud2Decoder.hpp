@@ -10,20 +10,20 @@ namespace unimap::io {
 
 // One field of a sensor_msgs/PointCloud2 (sensor_msgs/PointField), without ROS types.
 struct CloudField {
-  std::string name;          // "x", "intensity", "time", ...
-  std::uint32_t offset = 0;  // byte offset inside a point
-  std::uint8_t datatype = 0; // PointField: 1 INT8 2 UINT8 3 INT16 4 UINT16 5 INT32 6 UINT32 7 FLOAT32 8 FLOAT64
-  std::uint32_t count = 1;   // elements (only the first one is read)
+  std::string name;           // "x", "intensity", "time", ...
+  std::uint32_t offset = 0;   // byte offset inside a point
+  std::uint8_t datatype = 0;  // PointField: 1 INT8 2 UINT8 3 INT16 4 UINT16 5 INT32 6 UINT32 7 FLOAT32 8 FLOAT64
+  std::uint32_t count = 1;    // elements (only the first one is read)
 };
 
 // How a cloud's points carry their time (docs/real-data.md):
 enum class PointTimeConvention {
-  kNone,                 // no time field: has_point_time false, every point at the header stamp
-  kSecondsAndNanoseconds,// integer time_sec + time_nsec (absolute)
-  kRelativeNanoseconds,  // integer t / offset_time / time (Ouster, Livox): ns after the header stamp
-  kRelativeSeconds,      // float time / t / timestamp below 1e6 (Velodyne): s after the header stamp
-  kAbsoluteSeconds,      // float time / timestamp in [1e6, 1e15): absolute s (Hesai, Robosense)
-  kAbsoluteNanoseconds,  // float timestamp >= 1e15: absolute ns (Livox driver 2)
+  kNone,                   // no time field: has_point_time false, every point at the header stamp
+  kSecondsAndNanoseconds,  // integer time_sec + time_nsec (absolute)
+  kRelativeNanoseconds,    // integer t / offset_time / time (Ouster, Livox): ns after the header stamp
+  kRelativeSeconds,        // float time / t / timestamp below 1e6 (Velodyne): s after the header stamp
+  kAbsoluteSeconds,        // float time / timestamp in [1e6, 1e15): absolute s (Hesai, Robosense)
+  kAbsoluteNanoseconds,    // float timestamp >= 1e15: absolute ns (Livox driver 2)
 };
 
 // Name of a convention, for reports ("time_sec+time_nsec (absolute)").
@@ -31,8 +31,8 @@ const char* ToString(PointTimeConvention convention);
 
 // A decoded cloud.
 struct CloudDecoding {
-  RawScan scan;                   // points in the cloud's frame; start/end = earliest/latest point time
-  std::size_t dropped = 0;        // points with a non-finite x, y or z, or a non-finite time
+  RawScan scan;             // points in the cloud's frame; start/end = earliest/latest point time
+  std::size_t dropped = 0;  // points with a non-finite x, y or z, or a non-finite time
   PointTimeConvention time_convention = PointTimeConvention::kNone;
 };
 
@@ -62,10 +62,10 @@ class PointCloud2Decoder {
   double Read(const Slot& slot, const std::uint8_t* p) const;
 
   std::uint32_t point_step_;
-  bool swap_bytes_;          // the cloud's byte order differs from the host's
-  Slot x_, y_, z_;           // coordinates
-  Slot intensity_, ring_;    // optional
-  Slot time_, time_nsec_;    // per-point time (time_ is time_sec for kSecondsAndNanoseconds)
+  bool swap_bytes_;               // the cloud's byte order differs from the host's
+  Slot x_, y_, z_;                // coordinates
+  Slot intensity_, ring_;         // optional
+  Slot time_, time_nsec_;         // per-point time (time_ is time_sec for kSecondsAndNanoseconds)
   bool time_is_integer_ = false;  // integer time field (relative ns) vs float (seconds or ns by magnitude)
   bool sec_nsec_ = false;         // time_sec + time_nsec pair
 };

@@ -37,8 +37,8 @@ ConversionReport ConvertRosbag(const ConversionOptions& options) {
   note("odometry topic", selected.odometry);
   note("groundtruth topic", selected.groundtruth);
   if (!selected.cloud.empty() && !selected.laser.empty()) {
-    report.notes.push_back("both a cloud and a laser topic: writing " + selected.cloud + "; use --cloud-topic none to write " +
-                           selected.laser + " instead");
+    report.notes.push_back("both a cloud and a laser topic: writing " + selected.cloud +
+                           "; use --cloud-topic none to write " + selected.laser + " instead");
   }
 
   DatasetMetadata metadata;

@@ -53,14 +53,14 @@ bool ToIsometry(const geometry_msgs::Pose& pose, Eigen::Isometry3d* T) {
 
 class RosbagReader::Impl {
  public:
-  std::string label;                         // bag path, for messages
+  std::string label;  // bag path, for messages
   RosbagReaderOptions options;
   rosbag::Bag bag;
-  std::vector<RosbagTopicInfo> topics;       // every topic in the bag
-  RosbagTopics selected;                     // resolved choice ("" = not read)
-  std::map<std::string, Stream> stream_of;   // selected topic -> stream
-  std::unique_ptr<rosbag::View> view;        // messages of the selected topics
-  rosbag::View::iterator it;                 // next message
+  std::vector<RosbagTopicInfo> topics;      // every topic in the bag
+  RosbagTopics selected;                    // resolved choice ("" = not read)
+  std::map<std::string, Stream> stream_of;  // selected topic -> stream
+  std::unique_ptr<rosbag::View> view;       // messages of the selected topics
+  rosbag::View::iterator it;                // next message
   RosbagReaderStats stats;
 
   [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
@@ -87,7 +87,8 @@ class RosbagReader::Impl {
       const RosbagTopicInfo* info = Find(request);
       if (info == nullptr) Fail("no topic " + request + " in the bag; its topics:" + TopicList());
       if (!accepted(info->datatype)) {
-        Fail("topic " + request + " is " + info->datatype + ", not usable for " + option + "; its topics:" + TopicList());
+        Fail("topic " + request + " is " + info->datatype + ", not usable for " + option +
+             "; its topics:" + TopicList());
       }
       return request;
     }
@@ -96,7 +97,8 @@ class RosbagReader::Impl {
       if (accepted(t.datatype) && t.topic != selected.groundtruth) candidates.push_back(t.topic);
     }
     if (candidates.size() > 1) {
-      Fail("several " + types.front() + " topics; choose one with " + option + " (or 'none'); its topics:" + TopicList());
+      Fail("several " + types.front() + " topics; choose one with " + option +
+           " (or 'none'); its topics:" + TopicList());
     }
     return candidates.empty() ? "" : candidates.front();
   }
@@ -122,9 +124,9 @@ class RosbagReader::Impl {
     selected.joint = Resolve(request.joint, {kJointState}, "--joint-topic", true);
     selected.odometry = Resolve(request.odometry, {kOdometry}, "--odometry-topic", true);
     const std::pair<const std::string*, Stream> choices[] = {
-        {&selected.cloud, Stream::kCloud}, {&selected.laser, Stream::kLaser}, {&selected.imu, Stream::kImu},
-        {&selected.joint, Stream::kJoint}, {&selected.odometry, Stream::kOdometry},
-        {&selected.groundtruth, Stream::kGroundTruth}};
+        {&selected.cloud, Stream::kCloud},       {&selected.laser, Stream::kLaser},
+        {&selected.imu, Stream::kImu},           {&selected.joint, Stream::kJoint},
+        {&selected.odometry, Stream::kOdometry}, {&selected.groundtruth, Stream::kGroundTruth}};
     std::vector<std::string> names;
     for (const auto& [topic, stream] : choices) {
       if (topic->empty()) continue;
@@ -153,7 +155,8 @@ class RosbagReader::Impl {
         out->stamp_s = stamp;
         try {
           std::vector<CloudField> fields;
-          for (const sensor_msgs::PointField& f : cloud->fields) fields.push_back({f.name, f.offset, f.datatype, f.count});
+          for (const sensor_msgs::PointField& f : cloud->fields)
+            fields.push_back({f.name, f.offset, f.datatype, f.count});
           const PointCloud2Decoder decoder(fields, cloud->point_step, cloud->is_bigendian != 0);
           CloudDecoding decoded = decoder.Decode(cloud->data.data(), cloud->data.size(), cloud->width, cloud->height,
                                                  cloud->row_step, stamp);

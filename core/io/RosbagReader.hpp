@@ -22,11 +22,11 @@ namespace unimap::io {
 // (none if the bag has none; an error if it has several), "none" = not read,
 // anything else = that topic (an error if absent or of another type).
 struct RosbagTopics {
-  std::string cloud;             // sensor_msgs/PointCloud2 -> RawScan
-  std::string laser;             // sensor_msgs/LaserScan -> LineScan
-  std::string imu;               // sensor_msgs/Imu -> ImuSample
-  std::string joint;             // sensor_msgs/JointState -> EncoderSample (motor angle)
-  std::string odometry;          // nav_msgs/Odometry -> OdometrySample
+  std::string cloud;                 // sensor_msgs/PointCloud2 -> RawScan
+  std::string laser;                 // sensor_msgs/LaserScan -> LineScan
+  std::string imu;                   // sensor_msgs/Imu -> ImuSample
+  std::string joint;                 // sensor_msgs/JointState -> EncoderSample (motor angle)
+  std::string odometry;              // nav_msgs/Odometry -> OdometrySample
   std::string groundtruth = "none";  // nav_msgs/Odometry or geometry_msgs/PoseStamped -> StampedPose; never auto
 };
 
@@ -38,17 +38,17 @@ struct RosbagReaderOptions {
 // A bag topic, as listed in the bag's index.
 struct RosbagTopicInfo {
   std::string topic;
-  std::string datatype;       // e.g. "sensor_msgs/PointCloud2"
-  std::size_t messages = 0;   // messages on the topic
+  std::string datatype;      // e.g. "sensor_msgs/PointCloud2"
+  std::size_t messages = 0;  // messages on the topic
 };
 
 // One message turned into unimap's types; times are header stamps (the
 // bag's receive time when a header stamp is zero).
 struct RosbagMessage {
   std::string topic;
-  double stamp_s = 0.0;            // header stamp (or receive time, see above)
+  double stamp_s = 0.0;  // header stamp (or receive time, see above)
   std::variant<RawScan, LineScan, ImuSample, EncoderSample, OdometrySample, StampedPose> data;
-  std::size_t dropped_points = 0;  // clouds: points with non-finite fields left out
+  std::size_t dropped_points = 0;                                    // clouds: points with non-finite fields left out
   PointTimeConvention time_convention = PointTimeConvention::kNone;  // clouds: how point times were read
 };
 

@@ -69,9 +69,7 @@ std::size_t LinePayloadBytes(const LineScan& line) {
   return kLineFixedBytes + 4 * (line.ranges_m.size() + line.intensities.size());
 }
 
-std::size_t RawPayloadBytes(const RawScan& raw) {
-  return kRawFixedBytes + kRawPointBytes * raw.points.size();
-}
+std::size_t RawPayloadBytes(const RawScan& raw) { return kRawFixedBytes + kRawPointBytes * raw.points.size(); }
 
 std::string LineProblem(const LineScan& line) {
   if (!std::isfinite(line.start_time_s) || !std::isfinite(line.time_increment_s)) {
@@ -111,19 +109,19 @@ LineScan DecodeLine(const unsigned char* payload, std::size_t size, const std::s
   line.range_max_m = in.F64();
   const std::size_t n = in.U32();
   if (size < kLineFixedBytes + 4 * n) {
-    throw InputError(where + ": LineScan payload of " + std::to_string(size) +
-                     " bytes cannot hold its " + std::to_string(n) + " ranges");
+    throw InputError(where + ": LineScan payload of " + std::to_string(size) + " bytes cannot hold its " +
+                     std::to_string(n) + " ranges");
   }
   line.ranges_m.resize(n);
   for (float& range : line.ranges_m) range = in.F32();
   const std::size_t m = in.U32();
   if (m != 0 && m != n) {
-    throw InputError(where + ": LineScan has " + std::to_string(m) + " intensities for " +
-                     std::to_string(n) + " beams");
+    throw InputError(where + ": LineScan has " + std::to_string(m) + " intensities for " + std::to_string(n) +
+                     " beams");
   }
   if (size != kLineFixedBytes + 4 * (n + m)) {
-    throw InputError(where + ": LineScan payload is " + std::to_string(size) +
-                     " bytes, its counts say " + std::to_string(kLineFixedBytes + 4 * (n + m)));
+    throw InputError(where + ": LineScan payload is " + std::to_string(size) + " bytes, its counts say " +
+                     std::to_string(kLineFixedBytes + 4 * (n + m)));
   }
   line.intensities.resize(m);
   for (float& intensity : line.intensities) intensity = in.F32();
@@ -141,14 +139,12 @@ RawScan DecodeRaw(const unsigned char* payload, std::size_t size, const std::str
   raw.end_time_s = in.F64();
   const std::uint8_t flag = in.U8();
   if (flag > 1) {
-    throw InputError(where + ": RawScan has_point_time is " + std::to_string(flag) +
-                     ", expected 0 or 1");
+    throw InputError(where + ": RawScan has_point_time is " + std::to_string(flag) + ", expected 0 or 1");
   }
   raw.has_point_time = flag == 1;
   const std::size_t n = in.U32();
   if (size != kRawFixedBytes + kRawPointBytes * n) {
-    throw InputError(where + ": RawScan payload is " + std::to_string(size) +
-                     " bytes, its point count says " +
+    throw InputError(where + ": RawScan payload is " + std::to_string(size) + " bytes, its point count says " +
                      std::to_string(kRawFixedBytes + kRawPointBytes * n));
   }
   raw.points.resize(n);

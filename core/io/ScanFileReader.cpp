@@ -44,8 +44,7 @@ ScanFileReader::ScanFileReader(const std::filesystem::path& file)
   if (version != kScanFileVersion) {
     std::fclose(file_);
     throw InputError(label_ + ": scan file version " + std::to_string(version) +
-                     " is not supported (this build reads version " +
-                     std::to_string(kScanFileVersion) + ")");
+                     " is not supported (this build reads version " + std::to_string(kScanFileVersion) + ")");
   }
   offset_ = kScanFileHeaderBytes;
 }
@@ -53,8 +52,7 @@ ScanFileReader::ScanFileReader(const std::filesystem::path& file)
 ScanFileReader::~ScanFileReader() { std::fclose(file_); }
 
 std::string ScanFileReader::Where() const {
-  return label_ + ": record " + std::to_string(record_ + 1) + " (byte " +
-         std::to_string(offset_) + ")";
+  return label_ + ": record " + std::to_string(record_ + 1) + " (byte " + std::to_string(offset_) + ")";
 }
 
 std::optional<ScanRecord> ScanFileReader::Next() {
@@ -68,19 +66,17 @@ std::optional<ScanRecord> ScanFileReader::Next() {
   }
   const std::uint8_t kind = header[0];
   const std::uint32_t size = LoadU32(header + 1);
-  const std::uint64_t left = file_bytes_ > offset_ + sizeof(header)
-                                 ? file_bytes_ - offset_ - sizeof(header)
-                                 : 0;
+  const std::uint64_t left = file_bytes_ > offset_ + sizeof(header) ? file_bytes_ - offset_ - sizeof(header) : 0;
   if (size > left) {  // checked before allocating: a corrupt count cannot exhaust memory
-    throw InputError(Where() + ": truncated: its header announces " + std::to_string(size) +
-                     " payload bytes, only " + std::to_string(left) + " remain in the file");
+    throw InputError(Where() + ": truncated: its header announces " + std::to_string(size) + " payload bytes, only " +
+                     std::to_string(left) + " remain in the file");
   }
   payload_.resize(size);
   const std::size_t read = std::fread(payload_.data(), 1, size, file_);
   if (read != size) {
     if (std::ferror(file_) != 0) throw InputError(Where() + ": read error");
-    throw InputError(Where() + ": truncated: its header announces " + std::to_string(size) +
-                     " payload bytes, only " + std::to_string(read) + " could be read");
+    throw InputError(Where() + ": truncated: its header announces " + std::to_string(size) + " payload bytes, only " +
+                     std::to_string(read) + " could be read");
   }
   ScanRecord scan = DecodeScanPayload(kind, payload_.data(), size, Where());
   const double end_time_s = ScanEndTime(scan);
@@ -94,7 +90,8 @@ std::optional<ScanRecord> ScanFileReader::Next() {
     if (record_ > 0 && end_time_s - last_end_time_s_ > limits_->max_scan_step_s) {
       throw InputError(Where() + ": time jumps " + Text(end_time_s - last_end_time_s_) + " s ahead (the scan ends at " +
                        Text(end_time_s) + " s, the previous one at " + Text(last_end_time_s_) + " s), more than the " +
-                       Text(limits_->max_scan_step_s) + " s a scan may follow the previous one: a clock jump or lost data");
+                       Text(limits_->max_scan_step_s) +
+                       " s a scan may follow the previous one: a clock jump or lost data");
     }
   }
   last_end_time_s_ = end_time_s;

@@ -29,8 +29,8 @@ TextLineSource::TextLineSource(const std::filesystem::path& file)
     }
     file_eof_ = true;
   }
-  compressed_input_ = compressed_end_ >= 4 && std::memcmp(compressed_.data(), "BZh", 3) == 0 &&
-                      compressed_[3] >= '1' && compressed_[3] <= '9';
+  compressed_input_ = compressed_end_ >= 4 && std::memcmp(compressed_.data(), "BZh", 3) == 0 && compressed_[3] >= '1' &&
+                      compressed_[3] <= '9';
   if (!compressed_input_) {
     // Plain text: the bytes already read are the first text bytes.
     text_.swap(compressed_);

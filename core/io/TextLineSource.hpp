@@ -52,11 +52,11 @@ class TextLineSource {
   // Throws InputError "<file>:<line>: <reason>".
   [[noreturn]] void Fail(const std::string& reason) const;
 
-  std::string label_;                 // path as given, for messages
-  std::FILE* file_ = nullptr;         // open stream, owned
-  bool compressed_input_ = false;     // the file starts with the bzip2 magic
-  void* bz_stream_ = nullptr;         // bz_stream* while a stream is open (owned)
-  std::vector<char> compressed_;      // compressed bytes read from the file, [compressed_begin_, compressed_end_) unread
+  std::string label_;              // path as given, for messages
+  std::FILE* file_ = nullptr;      // open stream, owned
+  bool compressed_input_ = false;  // the file starts with the bzip2 magic
+  void* bz_stream_ = nullptr;      // bz_stream* while a stream is open (owned)
+  std::vector<char> compressed_;   // compressed bytes read from the file, [compressed_begin_, compressed_end_) unread
   std::size_t compressed_begin_ = 0;  // first unread compressed byte
   std::size_t compressed_end_ = 0;    // one past the last compressed byte read
   bool file_eof_ = false;             // the file has no more bytes

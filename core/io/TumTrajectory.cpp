@@ -12,8 +12,8 @@ namespace {
 
 // Replaces *line by the TUM row of `pose`; throws InputError naming `file`
 // for a pose that cannot be written or a time before *last_time_s.
-void AppendCheckedRow(const std::filesystem::path& file, const StampedPose& pose,
-                      double* last_time_s, bool* has_last, std::string* line) {
+void AppendCheckedRow(const std::filesystem::path& file, const StampedPose& pose, double* last_time_s, bool* has_last,
+                      std::string* line) {
   const std::string problem = TumPoseProblem(pose.time_s, pose.T_map_body);
   if (!problem.empty()) throw InputError(file.string() + ": " + problem);
   if (*has_last && pose.time_s < *last_time_s) {

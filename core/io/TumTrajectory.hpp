@@ -42,11 +42,11 @@ class TumTrajectoryWriter {
   void Close();
 
  private:
-  std::filesystem::path file_;             // final name
-  std::unique_ptr<PartialFile> partial_;   // open until Close()
-  std::string line_;                       // reused text of one row
-  double last_time_s_ = 0.0;               // time of the previous pose
-  bool has_last_ = false;                  // a pose was written
+  std::filesystem::path file_;            // final name
+  std::unique_ptr<PartialFile> partial_;  // open until Close()
+  std::string line_;                      // reused text of one row
+  double last_time_s_ = 0.0;              // time of the previous pose
+  bool has_last_ = false;                 // a pose was written
 };
 
 }  // namespace unimap::io

@@ -48,8 +48,7 @@ Eigen::Vector3f DecodeNormal(std::uint16_t code) {
 
 }  // namespace
 
-CellPlanes::CellPlanes(std::size_t cell_count)
-    : cells_(cell_count, static_cast<std::uint16_t>(kNone)) {}
+CellPlanes::CellPlanes(std::size_t cell_count) : cells_(cell_count, static_cast<std::uint16_t>(kNone)) {}
 
 void CellPlanes::Set(std::size_t index, const Eigen::Vector3f& normal, float center_height_m) {
   assert(index < cells_.size());

@@ -13,8 +13,7 @@ namespace {
 
 void RequireClamp(float clamp_m) {
   if (!(std::isfinite(clamp_m) && clamp_m > 0.0f)) {
-    throw InputError("DistanceField: clamp distance must be positive and finite, got " +
-                     std::to_string(clamp_m));
+    throw InputError("DistanceField: clamp distance must be positive and finite, got " + std::to_string(clamp_m));
   }
 }
 
@@ -28,10 +27,10 @@ void RequireClamp(float clamp_m) {
 bool JumpAlongAnEdge(const float (&c)[8], float max_jump_m) {
   int jump = 0;  // branch-free
   for (int k = 0; k < 4; ++k) {
-    jump |= static_cast<int>(std::abs(c[k] - c[k + 4]) > max_jump_m);                  // along x
-    const int y0 = (k & 1) | ((k & 2) << 1);                                          // 0 1 4 5
-    jump |= static_cast<int>(std::abs(c[y0] - c[y0 + 2]) > max_jump_m);               // along y
-    jump |= static_cast<int>(std::abs(c[2 * k] - c[2 * k + 1]) > max_jump_m);         // along z
+    jump |= static_cast<int>(std::abs(c[k] - c[k + 4]) > max_jump_m);          // along x
+    const int y0 = (k & 1) | ((k & 2) << 1);                                   // 0 1 4 5
+    jump |= static_cast<int>(std::abs(c[y0] - c[y0 + 2]) > max_jump_m);        // along y
+    jump |= static_cast<int>(std::abs(c[2 * k] - c[2 * k + 1]) > max_jump_m);  // along z
   }
   return jump != 0;
 }
@@ -43,24 +42,20 @@ DistanceField::DistanceField(float clamp_m, std::uint64_t sequence)
   RequireClamp(clamp_m);
 }
 
-DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims,
-                             float resolution_m, float clamp_m, std::vector<std::uint16_t> cells,
-                             std::uint64_t sequence)
-    : DistanceField(origin_m, dims, resolution_m, clamp_m, std::move(cells), sequence,
-                    Encoding::kUnsigned) {}
+DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
+                             float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence)
+    : DistanceField(origin_m, dims, resolution_m, clamp_m, std::move(cells), sequence, Encoding::kUnsigned) {}
 
-DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims,
-                             float resolution_m, float clamp_m, std::vector<std::uint16_t> cells,
-                             std::uint64_t sequence, Encoding encoding)
+DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
+                             float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence, Encoding encoding)
     : origin_m_(origin_m),
       dims_(dims),
       dims_f_(dims.cast<float>()),
       resolution_m_(resolution_m),
       inv_resolution_(1.0f / resolution_m),
       clamp_m_(clamp_m),
-      step_m_(encoding == Encoding::kSigned
-                  ? 2.0f * clamp_m / static_cast<float>(kMaxSignedSteps)
-                  : clamp_m / static_cast<float>(kMaxSteps)),
+      step_m_(encoding == Encoding::kSigned ? 2.0f * clamp_m / static_cast<float>(kMaxSignedSteps)
+                                            : clamp_m / static_cast<float>(kMaxSteps)),
       offset_m_(encoding == Encoding::kSigned ? clamp_m : 0.0f),
       shift_(encoding == Encoding::kSigned ? 1 : 0),
       flag_mask_(encoding == Encoding::kSigned ? 1 : 0),
@@ -76,17 +71,16 @@ DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vecto
   if ((dims.array() < 0).any()) throw InputError("DistanceField: negative grid size");
   const std::size_t expected = stride_x_ * static_cast<std::size_t>(dims.x());
   if (expected != cells.size()) {
-    throw InputError("DistanceField: grid " + std::to_string(dims.x()) + "x" +
-                     std::to_string(dims.y()) + "x" + std::to_string(dims.z()) + " needs " +
-                     std::to_string(expected) + " cells, got " + std::to_string(cells.size()));
+    throw InputError("DistanceField: grid " + std::to_string(dims.x()) + "x" + std::to_string(dims.y()) + "x" +
+                     std::to_string(dims.z()) + " needs " + std::to_string(expected) + " cells, got " +
+                     std::to_string(cells.size()));
   }
   if (encoding == Encoding::kSigned) FlagJumpingStencils(&cells);
   StoreBlocks(cells);
 }
 
-DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims,
-                             float resolution_m, float clamp_m, std::vector<std::shared_ptr<const Block>> blocks,
-                             std::uint64_t sequence)
+DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims, float resolution_m,
+                             float clamp_m, std::vector<std::shared_ptr<const Block>> blocks, std::uint64_t sequence)
     : origin_m_(origin_m),
       dims_(block_dims * kBlockEdge),
       dims_f_((block_dims * kBlockEdge).cast<float>()),
@@ -109,9 +103,9 @@ DistanceField::DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vecto
   if ((block_dims.array() < 0).any()) throw InputError("DistanceField: negative grid size");
   const std::size_t expected = block_stride_x_ * static_cast<std::size_t>(block_dims.x());
   if (expected != blocks_.size()) {
-    throw InputError("DistanceField: " + std::to_string(block_dims.x()) + "x" + std::to_string(block_dims.y()) +
-                     "x" + std::to_string(block_dims.z()) + " blocks need " + std::to_string(expected) +
-                     " entries, got " + std::to_string(blocks_.size()));
+    throw InputError("DistanceField: " + std::to_string(block_dims.x()) + "x" + std::to_string(block_dims.y()) + "x" +
+                     std::to_string(block_dims.z()) + " blocks need " + std::to_string(expected) + " entries, got " +
+                     std::to_string(blocks_.size()));
   }
   for (const auto& block : blocks_) {
     if (block != nullptr && block->size() != static_cast<std::size_t>(kBlockCells)) {
@@ -243,8 +237,7 @@ void DistanceField::SetPlanes(CellPlanes planes) {
   planes_ = std::move(planes);
 }
 
-bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* normal,
-                            float* offset_m) const {
+bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* normal, float* offset_m) const {
   if (planes_.size() == 0) return false;
   const Eigen::Vector3f f = (p_map - origin_m_) * inv_resolution_;
   if (!((f.array() >= 0.0f).all() && (f.array() < dims_f_.array()).all())) return false;
@@ -256,9 +249,7 @@ bool DistanceField::PlaneAt(const Eigen::Vector3f& p_map, Eigen::Vector3f* norma
   return true;
 }
 
-float DistanceField::CellDistance(const Eigen::Vector3i& cell) const {
-  return std::abs(CellValue(cell));
-}
+float DistanceField::CellDistance(const Eigen::Vector3i& cell) const { return std::abs(CellValue(cell)); }
 
 float DistanceField::CellValue(const Eigen::Vector3i& cell) const {
   if ((cell.array() < 0).any() || (cell.array() >= dims_.array()).any()) return clamp_m_;
@@ -276,8 +267,7 @@ bool DistanceField::Contains(const Eigen::Vector3f& p_map) const {
 
 Eigen::Vector3f DistanceField::box_max() const { return origin_m_ + dims_f_ * resolution_m_; }
 
-float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map,
-                                       Eigen::Vector3f* gradient_map) const {
+float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const {
   // Sample coordinates with voxel centres at integers.
   const Eigen::Vector3f u = (p_map - origin_m_) * inv_resolution_ - Eigen::Vector3f::Constant(0.5f);
   if (!u.allFinite() || (u.array() < -1.0f).any() || (u.array() >= dims_f_.array()).any()) {
@@ -342,8 +332,8 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map,
     const float dy1 = cz[1][1] - cz[1][0];
     const float dz0 = dcz[0][0] + t.y() * (dcz[0][1] - dcz[0][0]);
     const float dz1 = dcz[1][0] + t.y() * (dcz[1][1] - dcz[1][0]);
-    *gradient_map = Eigen::Vector3f(cy1 - cy0, dy0 + t.x() * (dy1 - dy0), dz0 + t.x() * (dz1 - dz0)) *
-                    (sign * inv_resolution_);
+    *gradient_map =
+        Eigen::Vector3f(cy1 - cy0, dy0 + t.x() * (dy1 - dy0), dz0 + t.x() * (dz1 - dz0)) * (sign * inv_resolution_);
   }
   return std::abs(value);
 }

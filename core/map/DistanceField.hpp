@@ -39,9 +39,7 @@ class DistanceField {
   static constexpr int kBlockCells = kBlockEdge * kBlockEdge * kBlockEdge;
   // One block's codes; the cell at (x, y, z) within it is at BlockOffset(x, y, z).
   using Block = std::vector<std::uint16_t>;
-  static constexpr int BlockOffset(int x, int y, int z) {
-    return (x << (2 * kBlockShift)) | (y << kBlockShift) | z;
-  }
+  static constexpr int BlockOffset(int x, int y, int z) { return (x << (2 * kBlockShift)) | (y << kBlockShift) | z; }
   // Largest 15-bit kSigned value; stands for +clamp() (0 for -clamp()).
   static constexpr std::uint16_t kMaxSignedSteps = 32767;
   // How cells encode distances.
@@ -64,18 +62,17 @@ class DistanceField {
   // A field over the box [origin_m, origin_m + dims * resolution_m) with
   // cells[(ix * dims.y() + iy) * dims.z() + iz] = Quantise(distance of cell).
   // Throws unimap::InputError when the sizes disagree or a value is invalid.
-  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
-                float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence);
+  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m, float clamp_m,
+                std::vector<std::uint16_t> cells, std::uint64_t sequence);
   // The same with cells in the given encoding.
-  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m,
-                float clamp_m, std::vector<std::uint16_t> cells, std::uint64_t sequence,
-                Encoding encoding);
+  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& dims, float resolution_m, float clamp_m,
+                std::vector<std::uint16_t> cells, std::uint64_t sequence, Encoding encoding);
   // A kUnsigned field over block_dims blocks from origin_m, blocks[(bx *
   // block_dims.y() + by) * block_dims.z() + bz] each kBlockCells codes or
   // null (every cell reads clamp). Throws unimap::InputError when the sizes
   // disagree or a value is invalid.
-  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims, float resolution_m,
-                float clamp_m, std::vector<std::shared_ptr<const Block>> blocks, std::uint64_t sequence);
+  DistanceField(const Eigen::Vector3f& origin_m, const Eigen::Vector3i& block_dims, float resolution_m, float clamp_m,
+                std::vector<std::shared_ptr<const Block>> blocks, std::uint64_t sequence);
 
   // The 16-bit code of a distance (values >= clamp_m map to kMaxSteps).
   static std::uint16_t Quantise(float distance_m, float clamp_m);
@@ -85,8 +82,7 @@ class DistanceField {
     if (std::isnan(signed_distance_m)) return static_cast<std::uint16_t>(kMaxSignedSteps << 1);
     const float unit = std::clamp(signed_distance_m / clamp_m, -1.0f, 1.0f);  // [-1, 1]
     // Round half up (the value is >= 0): cheaper than std::round in export loops.
-    const auto steps = static_cast<std::uint16_t>(
-        (unit + 1.0f) * (0.5f * static_cast<float>(kMaxSignedSteps)) + 0.5f);
+    const auto steps = static_cast<std::uint16_t>((unit + 1.0f) * (0.5f * static_cast<float>(kMaxSignedSteps)) + 0.5f);
     return static_cast<std::uint16_t>(steps << 1);
   }
 
@@ -96,15 +92,13 @@ class DistanceField {
     const float fx = (p_map.x() - origin_m_.x()) * inv_resolution_;
     const float fy = (p_map.y() - origin_m_.y()) * inv_resolution_;
     const float fz = (p_map.z() - origin_m_.z()) * inv_resolution_;
-    if (!(fx >= 0.0f && fy >= 0.0f && fz >= 0.0f && fx < dims_f_.x() && fy < dims_f_.y() &&
-          fz < dims_f_.z())) {
+    if (!(fx >= 0.0f && fy >= 0.0f && fz >= 0.0f && fx < dims_f_.x() && fy < dims_f_.y() && fz < dims_f_.z())) {
       return clamp_m_;
     }
     const Block* block = BlockAt(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz));
     if (block == nullptr) return clamp_m_;
-    const std::uint16_t code = (*block)[static_cast<std::size_t>(
-        BlockOffset(static_cast<int>(fx) & kBlockMask, static_cast<int>(fy) & kBlockMask,
-                    static_cast<int>(fz) & kBlockMask))];
+    const std::uint16_t code = (*block)[static_cast<std::size_t>(BlockOffset(
+        static_cast<int>(fx) & kBlockMask, static_cast<int>(fy) & kBlockMask, static_cast<int>(fz) & kBlockMask))];
     return std::abs(static_cast<float>(code >> shift_) * step_m_ - offset_m_);
   }
 
@@ -134,12 +128,12 @@ class DistanceField {
   bool Contains(const Eigen::Vector3f& p_map) const;
 
   const Eigen::Vector3f& origin() const { return origin_m_; }  // box min corner (m)
-  Eigen::Vector3f box_max() const;                            // box max corner (m)
+  Eigen::Vector3f box_max() const;                             // box max corner (m)
   const Eigen::Vector3i& dims() const { return dims_; }        // cells per axis
   float resolution() const { return resolution_m_; }           // cell edge (m)
   float clamp() const { return clamp_m_; }                     // clamp distance (m)
   Encoding encoding() const { return offset_m_ > 0.0f ? Encoding::kSigned : Encoding::kUnsigned; }
-  std::uint64_t sequence() const { return sequence_; }         // updates integrated when exported
+  std::uint64_t sequence() const { return sequence_; }  // updates integrated when exported
   // Cells of the box (stored or not).
   std::size_t CellCount() const {
     return static_cast<std::size_t>(dims_.x()) * static_cast<std::size_t>(dims_.y()) *
@@ -172,9 +166,9 @@ class DistanceField {
   // The code of an in-grid cell (the clamp's code when its block is not stored).
   std::uint16_t Code(int x, int y, int z) const {
     const Block* block = BlockAt(x, y, z);
-    return block == nullptr ? clamp_code_
-                            : (*block)[static_cast<std::size_t>(
-                                  BlockOffset(x & kBlockMask, y & kBlockMask, z & kBlockMask))];
+    return block == nullptr
+               ? clamp_code_
+               : (*block)[static_cast<std::size_t>(BlockOffset(x & kBlockMask, y & kBlockMask, z & kBlockMask))];
   }
   // Splits dense x-y-z cells into blocks (all-clamp blocks not stored).
   void StoreBlocks(const std::vector<std::uint16_t>& cells);
@@ -185,12 +179,12 @@ class DistanceField {
   float resolution_m_ = 1.0f;
   float inv_resolution_ = 1.0f;
   float clamp_m_ = 0.0f;
-  float step_m_ = 0.0f;    // metres per quantisation step
-  float offset_m_ = 0.0f;  // value = (code >> shift_) * step_m_ - offset_m_
-  int shift_ = 0;          // 1 when signed (bit 0 is the stencil flag)
-  std::uint16_t flag_mask_ = 0;   // 1 when signed: the stencil flag
-  float max_crossing_m_ = 0.0f;   // kMaxCrossingSum * resolution_m_
-  std::size_t stride_x_ = 0;  // x-y-z order over dims_ (planes_)
+  float step_m_ = 0.0f;          // metres per quantisation step
+  float offset_m_ = 0.0f;        // value = (code >> shift_) * step_m_ - offset_m_
+  int shift_ = 0;                // 1 when signed (bit 0 is the stencil flag)
+  std::uint16_t flag_mask_ = 0;  // 1 when signed: the stencil flag
+  float max_crossing_m_ = 0.0f;  // kMaxCrossingSum * resolution_m_
+  std::size_t stride_x_ = 0;     // x-y-z order over dims_ (planes_)
   std::size_t stride_y_ = 0;
   Eigen::Vector3i block_dims_ = Eigen::Vector3i::Zero();  // blocks per axis
   std::size_t block_stride_x_ = 0;

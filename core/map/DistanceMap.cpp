@@ -32,16 +32,14 @@ DistanceMapOptions DistanceMap::ValidOptions(DistanceMapOptions options, double 
 }
 
 DistanceMap::DistanceMap(const DistanceMapOptions& options)
-    : DistanceMap(std::make_unique<OccupancyTree>(ValidOptions(options, options.resolution_m)),
-                  options) {}
+    : DistanceMap(std::make_unique<OccupancyTree>(ValidOptions(options, options.resolution_m)), options) {}
 
 DistanceMap::DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapOptions& options)
     : options_(ValidOptions(options, tree->resolution_m())),
       half_range_m_(tree->HalfRangeM()),
       tree_(std::move(tree)),
       planner_(options_, options_.resolution_m),
-      snapshot_(std::make_shared<const DistanceField>(
-          static_cast<float>(options_.clamp_distance_m))) {
+      snapshot_(std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m))) {
   distances_on_ = options_.compute_distances;
   worker_ = std::thread([this] { WorkerLoop(); });
 }
@@ -57,20 +55,17 @@ DistanceMap::~DistanceMap() {
 
 void DistanceMap::CheckPosition(const Eigen::Vector3f& p_map, const char* what) const {
   const double reach = std::max(options_.max_range_m, options_.max_insert_range_m);
-  if (!p_map.allFinite() ||
-      static_cast<double>(p_map.cwiseAbs().maxCoeff()) + reach >= half_range_m_) {
-    throw InputError(std::string("DistanceMap: ") + what +
-                     " must be finite and within the octree's key range");
+  if (!p_map.allFinite() || static_cast<double>(p_map.cwiseAbs().maxCoeff()) + reach >= half_range_m_) {
+    throw InputError(std::string("DistanceMap: ") + what + " must be finite and within the octree's key range");
   }
 }
 
-void DistanceMap::InsertScan(std::vector<Eigen::Vector3f> points_map,
-                             const Eigen::Vector3f& sensor_origin_map) {
+void DistanceMap::InsertScan(std::vector<Eigen::Vector3f> points_map, const Eigen::Vector3f& sensor_origin_map) {
   CheckPosition(sensor_origin_map, "sensor origin");
   const std::size_t before = points_map.size();
-  points_map.erase(std::remove_if(points_map.begin(), points_map.end(),
-                                  [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
-                   points_map.end());
+  points_map.erase(
+      std::remove_if(points_map.begin(), points_map.end(), [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
+      points_map.end());
   if (points_map.size() != before) {
     std::lock_guard<std::mutex> lock(stats_mutex_);
     stats_.points_skipped += before - points_map.size();
@@ -255,8 +250,7 @@ std::shared_ptr<const DistanceField> DistanceMap::ProcessBatch(std::vector<Job>&
   std::shared_ptr<const DistanceField> field =
       region != nullptr
           ? region->Export(sequence_, surfaces, options_.cell_planes)
-          : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m),
-                                                  sequence_);
+          : std::make_shared<const DistanceField>(static_cast<float>(options_.clamp_distance_m), sequence_);
   const Clock::time_point exported = Clock::now();
 
   std::lock_guard<std::mutex> stats_lock(stats_mutex_);
@@ -292,8 +286,7 @@ bool DistanceMap::RebuildRegion() {
     return false;
   }
   region_.reset();  // free the old transform before allocating the new one
-  region_ = std::make_unique<EdtRegion>(&tree_->tree(), field_box,
-                                        static_cast<float>(options_.clamp_distance_m));
+  region_ = std::make_unique<EdtRegion>(&tree_->tree(), field_box, static_cast<float>(options_.clamp_distance_m));
   return true;
 }
 

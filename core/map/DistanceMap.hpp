@@ -50,16 +50,13 @@ class DistanceMap : public ScanMap {
   // A prior map from an octree (its resolution replaces options.resolution_m),
   // boxed around center_map. The first field is built in the background.
   static std::unique_ptr<DistanceMap> FromOctree(std::unique_ptr<octomap::OcTree> tree,
-                                                 const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& center_map);
+                                                 const DistanceMapOptions& options, const Eigen::Vector3f& center_map);
   // A prior map from an OctoMap .bt file. Throws InputError when it cannot be read.
-  static std::unique_ptr<DistanceMap> LoadBt(const std::filesystem::path& path,
-                                             const DistanceMapOptions& options,
+  static std::unique_ptr<DistanceMap> LoadBt(const std::filesystem::path& path, const DistanceMapOptions& options,
                                              const Eigen::Vector3f& center_map);
   // A prior map whose occupied voxels are those holding a point (map frame).
   static std::unique_ptr<DistanceMap> FromPoints(const std::vector<Eigen::Vector3f>& points_map,
-                                                 const DistanceMapOptions& options,
-                                                 const Eigen::Vector3f& center_map);
+                                                 const DistanceMapOptions& options, const Eigen::Vector3f& center_map);
   // Stops the background thread; queued scans not yet integrated are dropped.
   ~DistanceMap() override;
   DistanceMap(const DistanceMap&) = delete;
@@ -101,10 +98,10 @@ class DistanceMap : public ScanMap {
  private:
   // One queued request.
   struct Job {
-    std::vector<Eigen::Vector3f> points_map;  // scan to insert (empty: position only)
+    std::vector<Eigen::Vector3f> points_map;               // scan to insert (empty: position only)
     Eigen::Vector3f sensor_map = Eigen::Vector3f::Zero();  // sensor position / forced centre
-    bool force_center = false;                // sensor_map is a forced box centre
-    bool enable_distances = false;            // turns the distance transform on (no position)
+    bool force_center = false;                             // sensor_map is a forced box centre
+    bool enable_distances = false;                         // turns the distance transform on (no position)
   };
 
   DistanceMap(std::unique_ptr<OccupancyTree> tree, const DistanceMapOptions& options);

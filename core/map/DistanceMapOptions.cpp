@@ -20,8 +20,7 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
   if (!PositiveFinite(max_range_m) || max_range_m < 2.0 * resolution_m) {
     return Fail(why, "max_range_m must be finite and at least two voxels (2 * resolution_m)");
   }
-  if (!PositiveFinite(clamp_distance_m) || clamp_distance_m < resolution_m ||
-      clamp_distance_m > max_range_m) {
+  if (!PositiveFinite(clamp_distance_m) || clamp_distance_m < resolution_m || clamp_distance_m > max_range_m) {
     return Fail(why, "clamp_distance_m must lie in [resolution_m, max_range_m]");
   }
   if (!(recenter_fraction > 0.0 && recenter_fraction <= 1.0)) {
@@ -38,8 +37,7 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
   if (!(prob_miss > 0.0 && prob_miss < 0.5)) return Fail(why, "prob_miss must lie in (0, 0.5)");
   if (!(clamp_min_probability > 0.0 && clamp_min_probability < occupancy_threshold &&
         occupancy_threshold < clamp_max_probability && clamp_max_probability < 1.0)) {
-    return Fail(why,
-                "need 0 < clamp_min_probability < occupancy_threshold < clamp_max_probability < 1");
+    return Fail(why, "need 0 < clamp_min_probability < occupancy_threshold < clamp_max_probability < 1");
   }
   // Octree keys are 16 bit: coordinates must stay within +-32768 voxels.
   const double key_half_range_m = 32768.0 * resolution_m;

@@ -23,8 +23,7 @@ std::unique_ptr<DistanceMap> DistanceMap::FromOctree(std::unique_ptr<octomap::Oc
   return map;
 }
 
-std::unique_ptr<DistanceMap> DistanceMap::LoadBt(const std::filesystem::path& path,
-                                                 const DistanceMapOptions& options,
+std::unique_ptr<DistanceMap> DistanceMap::LoadBt(const std::filesystem::path& path, const DistanceMapOptions& options,
                                                  const Eigen::Vector3f& center_map) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {

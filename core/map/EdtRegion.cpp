@@ -14,8 +14,7 @@ namespace unimap::map {
 namespace {
 
 octomap::OcTreeKey ToOctreeKey(const Eigen::Vector3i& key) {
-  return octomap::OcTreeKey(static_cast<octomap::key_type>(key.x()),
-                            static_cast<octomap::key_type>(key.y()),
+  return octomap::OcTreeKey(static_cast<octomap::key_type>(key.x()), static_cast<octomap::key_type>(key.y()),
                             static_cast<octomap::key_type>(key.z()));
 }
 
@@ -38,9 +37,8 @@ EdtRegion::~EdtRegion() = default;
 
 void EdtRegion::Update() { edt_->update(/*updateRealDist=*/true); }
 
-std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
-                                                      const SurfacePoints* surfaces,
-                                                      bool with_planes) const {
+std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence, const SurfacePoints* surfaces,
+                                                       bool with_planes) const {
   const Eigen::Vector3i dims = box_.Dims();
   std::vector<std::uint16_t> cells(box_.CellCount());
   const double half_voxel_m = 0.5 * tree_->getResolution();
@@ -49,8 +47,8 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
                                  static_cast<float>(min_center.y() - half_voxel_m),
                                  static_cast<float>(min_center.z() - half_voxel_m));
   const auto make_field = [&](DistanceField::Encoding encoding) {
-    return std::make_shared<DistanceField>(origin_m, dims, static_cast<float>(tree_->getResolution()),
-                                           clamp_m_, std::move(cells), sequence, encoding);
+    return std::make_shared<DistanceField>(origin_m, dims, static_cast<float>(tree_->getResolution()), clamp_m_,
+                                           std::move(cells), sequence, encoding);
   };
   std::size_t index = 0;
   if (surfaces == nullptr) {
@@ -71,8 +69,7 @@ std::shared_ptr<const DistanceField> EdtRegion::Export(std::uint64_t sequence,
   return field;
 }
 
-void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells,
-                           CellPlanes* planes) const {
+void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells, CellPlanes* planes) const {
   // Neighbouring cells mostly share their nearest obstacle. Remember the
   // obstacle (and its element) of each cell of the current x plane, so the
   // cells just visited along z, y and x are checked first, then a small
@@ -101,10 +98,10 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
   // cast to an inaccessible base is well-defined ([expr.cast]/4).
   const DynamicEDT3D& cells_edt = (const DynamicEDT3D&)(*edt_);
   const float resolution_m = static_cast<float>(tree_->getResolution());
-  const Eigen::Vector3f min_center = Eigen::Vector3f(
-      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().x()))),
-      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().y()))),
-      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().z()))));
+  const Eigen::Vector3f min_center =
+      Eigen::Vector3f(static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().x()))),
+                      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().y()))),
+                      static_cast<float>(tree_->keyToCoord(static_cast<octomap::key_type>(box_.min().z()))));
   // Cells at the transform's maximum distance have no obstacle in reach.
   const float reach_m = edt_->getMaxDist();
   std::size_t index = 0;
@@ -124,8 +121,7 @@ void EdtRegion::FillSigned(const SurfacePoints& surfaces, std::vector<std::uint1
               const Eigen::Vector3f center = min_center + cell.cast<float>() * resolution_m;
               distance_m = surfaces.SignedDistance(*seen.element, center);
               if (planes != nullptr && seen.element->planar) {
-                planes->Set(index, seen.element->normal,
-                            seen.element->normal.dot(center - seen.element->mean_m));
+                planes->Set(index, seen.element->normal, seen.element->normal.dot(center - seen.element->mean_m));
               }
             }
           }

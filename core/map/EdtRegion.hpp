@@ -41,8 +41,7 @@ class EdtRegion {
   // (SurfacePoints::SignedDistance); the others keep the centre distance.
   // With surfaces and with_planes the field also carries the plane of each
   // cell's nearest planar element (DistanceField::SetPlanes).
-  std::shared_ptr<const DistanceField> Export(std::uint64_t sequence,
-                                              const SurfacePoints* surfaces = nullptr,
+  std::shared_ptr<const DistanceField> Export(std::uint64_t sequence, const SurfacePoints* surfaces = nullptr,
                                               bool with_planes = false) const;
 
   const KeyBox& box() const { return box_; }
@@ -51,8 +50,7 @@ class EdtRegion {
  private:
   // Export's cells with surfaces (kSigned codes, in the box's x-y-z order).
   // planes (if not null) receives the plane of each cell's nearest planar element.
-  void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells,
-                  CellPlanes* planes) const;
+  void FillSigned(const SurfacePoints& surfaces, std::vector<std::uint16_t>* cells, CellPlanes* planes) const;
 
   octomap::OcTree* tree_;
   KeyBox box_;

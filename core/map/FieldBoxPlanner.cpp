@@ -17,8 +17,8 @@ KeyBox FieldBoxPlanner::SensorBox(const Eigen::Vector3i& center_key) const {
   return KeyBox(center_key - half, center_key + half);
 }
 
-KeyBox FieldBoxPlanner::FieldBox(const KeyBox& occupied, const KeyBox& sensor_box,
-                                 const Eigen::Vector3i& center_key, bool* shrunk) const {
+KeyBox FieldBoxPlanner::FieldBox(const KeyBox& occupied, const KeyBox& sensor_box, const Eigen::Vector3i& center_key,
+                                 bool* shrunk) const {
   const KeyBox inflated = occupied.Inflated(clamp_cells_);
   KeyBox field = inflated.Intersection(sensor_box);
   int half = range_cells_;
@@ -31,8 +31,7 @@ KeyBox FieldBoxPlanner::FieldBox(const KeyBox& occupied, const KeyBox& sensor_bo
   return field;
 }
 
-KeyBox FieldBoxPlanner::GrownOccupied(const KeyBox& occupied, const KeyBox& endpoints,
-                                      const KeyBox& sensor_box) const {
+KeyBox FieldBoxPlanner::GrownOccupied(const KeyBox& occupied, const KeyBox& endpoints, const KeyBox& sensor_box) const {
   const KeyBox fresh = endpoints.Intersection(sensor_box);
   if (occupied.Contains(fresh)) return occupied;
   KeyBox grown = occupied;
@@ -40,8 +39,7 @@ KeyBox FieldBoxPlanner::GrownOccupied(const KeyBox& occupied, const KeyBox& endp
   return grown.Inflated(margin_cells_).Intersection(sensor_box);
 }
 
-bool FieldBoxPlanner::NeedsRecenter(const Eigen::Vector3i& center_key,
-                                    const Eigen::Vector3i& sensor_key) const {
+bool FieldBoxPlanner::NeedsRecenter(const Eigen::Vector3i& center_key, const Eigen::Vector3i& sensor_key) const {
   const int offset = (sensor_key - center_key).cwiseAbs().maxCoeff();
   return static_cast<double>(offset) > recenter_cells_;
 }

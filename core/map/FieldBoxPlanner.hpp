@@ -21,12 +21,11 @@ class FieldBoxPlanner {
   // of sensor_box closer than the clamp to an occupied voxel of sensor_box.
   // Above max_edt_cells the sensor box is shrunk about center_key until the
   // result fits, and *shrunk is set (left untouched otherwise).
-  KeyBox FieldBox(const KeyBox& occupied, const KeyBox& sensor_box,
-                  const Eigen::Vector3i& center_key, bool* shrunk) const;
+  KeyBox FieldBox(const KeyBox& occupied, const KeyBox& sensor_box, const Eigen::Vector3i& center_key,
+                  bool* shrunk) const;
   // occupied grown by the endpoints of new returns inside sensor_box, plus
   // the growth margin on every side; equals occupied when nothing is new.
-  KeyBox GrownOccupied(const KeyBox& occupied, const KeyBox& endpoints,
-                       const KeyBox& sensor_box) const;
+  KeyBox GrownOccupied(const KeyBox& occupied, const KeyBox& endpoints, const KeyBox& sensor_box) const;
   // True when the sensor is farther than recenter_fraction * max_range_m
   // from the box centre along any axis.
   bool NeedsRecenter(const Eigen::Vector3i& center_key, const Eigen::Vector3i& sensor_key) const;

@@ -8,8 +8,7 @@ KeyBox::KeyBox()
     : min_(Eigen::Vector3i::Constant(std::numeric_limits<int>::max())),
       max_(Eigen::Vector3i::Constant(std::numeric_limits<int>::min())) {}
 
-KeyBox::KeyBox(const Eigen::Vector3i& min_key, const Eigen::Vector3i& max_key)
-    : min_(min_key), max_(max_key) {
+KeyBox::KeyBox(const Eigen::Vector3i& min_key, const Eigen::Vector3i& max_key) : min_(min_key), max_(max_key) {
   if (IsEmpty()) *this = KeyBox();
 }
 
@@ -20,8 +19,7 @@ Eigen::Vector3i KeyBox::Dims() const {
 
 std::size_t KeyBox::CellCount() const {
   const Eigen::Vector3i dims = Dims();
-  return static_cast<std::size_t>(dims.x()) * static_cast<std::size_t>(dims.y()) *
-         static_cast<std::size_t>(dims.z());
+  return static_cast<std::size_t>(dims.x()) * static_cast<std::size_t>(dims.y()) * static_cast<std::size_t>(dims.z());
 }
 
 bool KeyBox::Contains(const Eigen::Vector3i& key) const {

@@ -5,21 +5,21 @@
 
 #include <Eigen/Core>
 
+#include "options/FieldVisitor.hpp"
 #include "unimap/BodyScan.hpp"
 #include "unimap/LineScan.hpp"
-#include "options/FieldVisitor.hpp"
 
 namespace unimap::map {
 
 // Settings of LineGapFill.
 struct LineGapFillOptions {
-  double step_m = 0.05;                 // spacing of the filled points along a gap
-  double max_gap_m = 1.0;               // longer gaps between a beam's two returns stay open
-  double max_incidence_deg = 75.0;      // a gap more nearly along the beams than this is a depth jump ...
+  double step_m = 0.05;                     // spacing of the filled points along a gap
+  double max_gap_m = 1.0;                   // longer gaps between a beam's two returns stay open
+  double max_incidence_deg = 75.0;          // a gap more nearly along the beams than this is a depth jump ...
   double max_grazing_incidence_deg = 85.0;  // ... unless it is at most this and continues the beam's
-                                        // previous gap (a wall seen at a grazing angle)
-  double max_turn_deg = 45.0;           // continues: the two gaps' directions differ by at most this
-  double max_line_interval_s = 0.1;     // lines further apart in time are not consecutive
+                                            // previous gap (a wall seen at a grazing angle)
+  double max_turn_deg = 45.0;               // continues: the two gaps' directions differ by at most this
+  double max_line_interval_s = 0.1;         // lines further apart in time are not consecutive
 
   // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
   void VisitFields(options::FieldVisitor& v);
@@ -28,7 +28,7 @@ struct LineGapFillOptions {
 
 // One beam's return in the map frame.
 struct BeamReturn {
-  std::uint16_t beam = 0;          // index of the beam within its line
+  std::uint16_t beam = 0;  // index of the beam within its line
   Eigen::Vector3f p_map = Eigen::Vector3f::Zero();
 };
 
@@ -60,13 +60,13 @@ class LineGapFill {
 
  private:
   LineGapFillOptions options_;
-  double cos_min_beam_angle_;  // cos(90 deg - max incidence)
+  double cos_min_beam_angle_;          // cos(90 deg - max incidence)
   double cos_min_grazing_beam_angle_;  // cos(90 deg - max grazing incidence)
-  double cos_max_turn_;        // cos(max turn)
+  double cos_max_turn_;                // cos(max turn)
   bool have_previous_ = false;
   double previous_time_s_ = 0.0;
   Eigen::Vector3f previous_sensor_map_ = Eigen::Vector3f::Zero();
-  std::vector<Eigen::Vector3f> previous_;  // by beam; NaN where the beam had no return
+  std::vector<Eigen::Vector3f> previous_;      // by beam; NaN where the beam had no return
   std::vector<Eigen::Vector3f> previous_gap_;  // by beam: its last gap (unit), NaN when none
 };
 

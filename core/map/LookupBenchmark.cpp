@@ -10,8 +10,7 @@ namespace unimap::map {
 namespace {
 
 // Random points in the field's box (a unit cube for an empty field).
-std::vector<Eigen::Vector3f> QueryPoints(const DistanceField& field, std::size_t count,
-                                         std::uint32_t seed) {
+std::vector<Eigen::Vector3f> QueryPoints(const DistanceField& field, std::size_t count, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const Eigen::Vector3f low = field.origin();
@@ -25,8 +24,7 @@ std::vector<Eigen::Vector3f> QueryPoints(const DistanceField& field, std::size_t
 }
 
 template <class Lookup>
-double TimeLookups(const std::vector<Eigen::Vector3f>& points, std::size_t lookups,
-                   Lookup lookup) {
+double TimeLookups(const std::vector<Eigen::Vector3f>& points, std::size_t lookups, Lookup lookup) {
   if (points.empty() || lookups == 0) return 0.0;
   volatile float sink = 0.0f;
   float sum = 0.0f;
@@ -38,8 +36,7 @@ double TimeLookups(const std::vector<Eigen::Vector3f>& points, std::size_t looku
   const auto stop = std::chrono::steady_clock::now();
   sink = sum;
   static_cast<void>(sink);
-  return std::chrono::duration<double, std::nano>(stop - start).count() /
-         static_cast<double>(lookups);
+  return std::chrono::duration<double, std::nano>(stop - start).count() / static_cast<double>(lookups);
 }
 
 }  // namespace
@@ -49,13 +46,11 @@ double MeasureLookupNs(const DistanceField& field, std::size_t lookups, std::uin
   return TimeLookups(points, lookups, [&](const Eigen::Vector3f& p) { return field.Distance(p); });
 }
 
-double MeasureTrilinearLookupNs(const DistanceField& field, std::size_t lookups,
-                                std::uint32_t seed) {
+double MeasureTrilinearLookupNs(const DistanceField& field, std::size_t lookups, std::uint32_t seed) {
   const std::vector<Eigen::Vector3f> points = QueryPoints(field, lookups, seed);
   Eigen::Vector3f gradient;
-  return TimeLookups(points, lookups, [&](const Eigen::Vector3f& p) {
-    return field.DistanceTrilinear(p, &gradient) + gradient.x();
-  });
+  return TimeLookups(points, lookups,
+                     [&](const Eigen::Vector3f& p) { return field.DistanceTrilinear(p, &gradient) + gradient.x(); });
 }
 
 }  // namespace unimap::map

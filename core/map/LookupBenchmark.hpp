@@ -12,7 +12,6 @@ namespace unimap::map {
 double MeasureLookupNs(const DistanceField& field, std::size_t lookups, std::uint32_t seed);
 
 // The same for DistanceField::DistanceTrilinear with its gradient.
-double MeasureTrilinearLookupNs(const DistanceField& field, std::size_t lookups,
-                                std::uint32_t seed);
+double MeasureTrilinearLookupNs(const DistanceField& field, std::size_t lookups, std::uint32_t seed);
 
 }  // namespace unimap::map

@@ -26,12 +26,11 @@ bool NeighborhoodPlaneOptions::IsValid(std::string* why) const {
 }
 
 NeighborhoodPlane FitNeighborhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
-                                         const NeighborhoodPlaneOptions& options) {
+                                       const NeighborhoodPlaneOptions& options) {
   NeighborhoodPlane out;
   if (field.CellCount() == 0 || !p_map.allFinite()) return out;
   const float surface_m = 0.5f * field.resolution();
-  const Eigen::Vector3i center =
-      ((p_map - field.origin()) / field.resolution()).array().floor().cast<int>();
+  const Eigen::Vector3i center = ((p_map - field.origin()) / field.resolution()).array().floor().cast<int>();
   const int r = options.radius_cells;
   // Moments about the centre of the point's cell (small numbers, no cancellation).
   const Eigen::Vector3d reference = field.CellCenter(center).cast<double>();

@@ -9,8 +9,8 @@ namespace unimap::map {
 
 // Settings of FitNeighborhoodPlane.
 struct NeighborhoodPlaneOptions {
-  int radius_cells = 3;             // the neighbourhood: cells within this many cells per axis of the point's
-  int min_cells = 6;                // fewer surface cells than this: kTooFew
+  int radius_cells = 3;              // the neighbourhood: cells within this many cells per axis of the point's
+  int min_cells = 6;                 // fewer surface cells than this: kTooFew
   double max_thickness_ratio = 0.1;  // planar when the smallest covariance eigenvalue is at most this
                                      // times the middle one
   double min_spread_ratio = 0.2;     // linear (one scan stripe) when the middle eigenvalue is below this
@@ -44,6 +44,6 @@ struct NeighborhoodPlane {
 // point beside a stripe can be measured across the surface instead of
 // towards the stripe (docs/mapping.md, known limitation).
 NeighborhoodPlane FitNeighborhoodPlane(const DistanceField& field, const Eigen::Vector3f& p_map,
-                                         const NeighborhoodPlaneOptions& options);
+                                       const NeighborhoodPlaneOptions& options);
 
 }  // namespace unimap::map

@@ -13,13 +13,10 @@ namespace unimap::map {
 
 namespace {
 
-Eigen::Vector3i FromOctreeKey(const octomap::OcTreeKey& key) {
-  return Eigen::Vector3i(key[0], key[1], key[2]);
-}
+Eigen::Vector3i FromOctreeKey(const octomap::OcTreeKey& key) { return Eigen::Vector3i(key[0], key[1], key[2]); }
 
 octomap::OcTreeKey ToOctreeKey(const Eigen::Vector3i& key) {
-  return octomap::OcTreeKey(static_cast<octomap::key_type>(key.x()),
-                            static_cast<octomap::key_type>(key.y()),
+  return octomap::OcTreeKey(static_cast<octomap::key_type>(key.x()), static_cast<octomap::key_type>(key.y()),
                             static_cast<octomap::key_type>(key.z()));
 }
 
@@ -27,8 +24,8 @@ octomap::OcTreeKey ToOctreeKey(const Eigen::Vector3i& key) {
 std::uint64_t Pack(const Eigen::Vector3i& key) { return SurfacePoints::Pack(key); }
 
 Eigen::Vector3i Unpack(std::uint64_t packed) {
-  return Eigen::Vector3i(static_cast<int>((packed >> 32) & 0xffff),
-                         static_cast<int>((packed >> 16) & 0xffff), static_cast<int>(packed & 0xffff));
+  return Eigen::Vector3i(static_cast<int>((packed >> 32) & 0xffff), static_cast<int>((packed >> 16) & 0xffff),
+                         static_cast<int>(packed & 0xffff));
 }
 
 // Calls visit(min_key, size_voxels) for every occupied leaf inside within.
@@ -61,8 +58,7 @@ OccupancyTree::OccupancyTree(const DistanceMapOptions& options)
   ApplySensorModel();
 }
 
-OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree,
-                             const DistanceMapOptions& options)
+OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree, const DistanceMapOptions& options)
     : options_(options),
       tree_(std::move(tree)),
       resolution_m_(0.0),
@@ -105,8 +101,7 @@ void OccupancyTree::ApplySensorModel() {
   tree_->setClampingThresMax(options_.clamp_max_probability);
 }
 
-KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map,
-                             const Eigen::Vector3f& origin_map) {
+KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& origin_map) {
   if (options_.raycast_free_space && !options_.clear_occupied_only) {
     return InsertWithOctomap(points_map, origin_map);
   }
@@ -147,8 +142,7 @@ KeyBox OccupancyTree::Insert(const std::vector<Eigen::Vector3f>& points_map,
 }
 
 void OccupancyTree::ClearOccupiedAlongRays(const Eigen::Vector3f& origin_map,
-                                           const std::vector<Eigen::Vector3f>& ends_map,
-                                           const KeySetType& hits) {
+                                           const std::vector<Eigen::Vector3f>& ends_map, const KeySetType& hits) {
   if (occupied_.empty()) return;
   const octomap::point3d origin(origin_map.x(), origin_map.y(), origin_map.z());
   octomap::KeyRay ray;  // voxels from the origin's up to (excluding) the end's
@@ -190,8 +184,7 @@ KeyBox OccupancyTree::InsertWithOctomap(const std::vector<Eigen::Vector3f>& poin
     }
   }
   const octomap::point3d origin(origin_map.x(), origin_map.y(), origin_map.z());
-  tree_->insertPointCloud(cloud, origin, options_.max_insert_range_m, /*lazy_eval=*/false,
-                          options_.discretize_rays);
+  tree_->insertPointCloud(cloud, origin, options_.max_insert_range_m, /*lazy_eval=*/false, options_.discretize_rays);
   if (surfaces_ == nullptr) return endpoints;
   for (const std::uint64_t key : hits) SyncSurface(Unpack(key));
   // Voxels the rays freed: only the tree's change detection (enabled while a

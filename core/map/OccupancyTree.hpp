@@ -73,17 +73,14 @@ class OccupancyTree {
  private:
   void ApplySensorModel();
   // Standard OctoMap insertion (clear_occupied_only off).
-  KeyBox InsertWithOctomap(const std::vector<Eigen::Vector3f>& points_map,
-                           const Eigen::Vector3f& origin_map);
+  KeyBox InsertWithOctomap(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& origin_map);
   // Lowers the occupied voxels the rays to ends cross (clear_occupied_only).
-  void ClearOccupiedAlongRays(const Eigen::Vector3f& origin_map,
-                              const std::vector<Eigen::Vector3f>& ends_map,
+  void ClearOccupiedAlongRays(const Eigen::Vector3f& origin_map, const std::vector<Eigen::Vector3f>& ends_map,
                               const KeySetType& hits);
   // Applies one hit or miss to key and keeps occupied_ and surfaces_ in step.
   void UpdateVoxel(const Eigen::Vector3i& key, bool hit);
   // Adds the returns within range to surfaces_ (sensor_map null: unknown).
-  void AddSurfacePoints(const std::vector<Eigen::Vector3f>& points_map,
-                        const Eigen::Vector3f* sensor_map);
+  void AddSurfacePoints(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f* sensor_map);
   // Refreshes the surface of key when its voxel is occupied, else forgets it.
   void SyncSurface(const Eigen::Vector3i& key);
 

@@ -117,8 +117,8 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
       }
       if (left == Leave::kEnded) break;
       if (left == Leave::kMoved) continue;
-      const auto bit = static_cast<std::size_t>(DistanceField::BlockOffset(
-          current.x() & (kEdge - 1), current.y() & (kEdge - 1), current.z() & (kEdge - 1)));
+      const auto bit = static_cast<std::size_t>(
+          DistanceField::BlockOffset(current.x() & (kEdge - 1), current.y() & (kEdge - 1), current.z() & (kEdge - 1)));
       if (occupancy.mask != nullptr && ((*occupancy.mask)[bit / 64] >> (bit % 64) & 1u) != 0 && visit(current)) {
         cached_block = Eigen::Vector3i::Constant(-1);
       }

@@ -5,7 +5,9 @@
 namespace unimap::map {
 
 Submap::Submap(int id, const Eigen::Vector3d& origin_local, const DistanceMapOptions& options)
-    : id_(id), T_local_submap_(Eigen::Translation3d(origin_local)), map_(std::make_unique<SurfaceDistanceMap>(options)) {}
+    : id_(id),
+      T_local_submap_(Eigen::Translation3d(origin_local)),
+      map_(std::make_unique<SurfaceDistanceMap>(options)) {}
 
 void Submap::Insert(std::vector<Eigen::Vector3f> points_local, const Eigen::Vector3f& sensor_origin_local) {
   assert(map_ && "Submap::Insert after Retire");

@@ -4,8 +4,8 @@
 
 #include <Eigen/Geometry>
 
-#include "map/SurfaceDistanceMap.hpp"
 #include "map/DistanceMapOptions.hpp"
+#include "map/SurfaceDistanceMap.hpp"
 
 namespace unimap::map {
 
@@ -13,12 +13,12 @@ namespace unimap::map {
 // (the mean of each occupied voxel's returns) in its own frame, for loop
 // closure.
 struct RetiredSubmap {
-  int id = 0;                                                  // SubmapManager id
+  int id = 0;                                                        // SubmapManager id
   Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();  // frame at creation (local odometry frame)
-  std::vector<Eigen::Vector3f> points_submap;                  // surface points (the mean of each occupied
-                                                               // voxel's returns), submap frame
-  int scans_3d = 0;                                            // 3D scans it received
-  MapUpdateTimes update_times;                                 // its map's update times, summed
+  std::vector<Eigen::Vector3f> points_submap;                        // surface points (the mean of each occupied
+                                                                     // voxel's returns), submap frame
+  int scans_3d = 0;                                                  // 3D scans it received
+  MapUpdateTimes update_times;                                       // its map's update times, summed
 };
 
 // One submap (docs/design.md 1.4): its surface, occupancy and incremental

@@ -24,8 +24,7 @@ std::shared_ptr<const DistanceField> SubmapManager::Snapshot() const {
   return live_.empty() ? empty_ : live_.front()->distance_map().Snapshot();
 }
 
-void SubmapManager::InsertScan(std::vector<Eigen::Vector3f> points_local,
-                               const Eigen::Vector3f& sensor_origin_local) {
+void SubmapManager::InsertScan(std::vector<Eigen::Vector3f> points_local, const Eigen::Vector3f& sensor_origin_local) {
   if (!sensor_origin_local.allFinite()) throw InputError("submap insertion: sensor origin is not finite");
   std::lock_guard<std::mutex> lock(mutex_);
   SubmapInsertion insertion;

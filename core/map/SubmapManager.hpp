@@ -12,10 +12,10 @@ namespace unimap::map {
 
 // The submaps a 3D scan went into (the matching one first).
 struct SubmapInsertion {
-  std::vector<int> submap_ids;                      // ids of the receiving submaps
-  std::vector<Eigen::Isometry3d> T_local_submaps;   // their frames, same order
-  std::vector<int> created_ids;                     // submaps started by this insertion (before it,
-                                                    // receiving it, or after it, for the next scans)
+  std::vector<int> submap_ids;                             // ids of the receiving submaps
+  std::vector<Eigen::Isometry3d> T_local_submaps;          // their frames, same order
+  std::vector<int> created_ids;                            // submaps started by this insertion (before it,
+                                                           // receiving it, or after it, for the next scans)
   std::vector<Eigen::Isometry3d> created_T_local_submaps;  // their frames, same order
 };
 

@@ -8,7 +8,6 @@
 
 #include <Eigen/Geometry>
 
-
 namespace unimap::map {
 namespace {
 
@@ -19,9 +18,9 @@ constexpr int kMask = kEdge - 1;
 constexpr int kShiftBlock = DistanceField::kBlockShift;
 constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();  // no occupied voxel within reach
 
-const std::array<Eigen::Vector3i, 6> kSteps = {Eigen::Vector3i(1, 0, 0),  Eigen::Vector3i(-1, 0, 0),
-                                               Eigen::Vector3i(0, 1, 0),  Eigen::Vector3i(0, -1, 0),
-                                               Eigen::Vector3i(0, 0, 1),  Eigen::Vector3i(0, 0, -1)};
+const std::array<Eigen::Vector3i, 6> kSteps = {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(-1, 0, 0),
+                                               Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, -1, 0),
+                                               Eigen::Vector3i(0, 0, 1), Eigen::Vector3i(0, 0, -1)};
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -68,8 +67,7 @@ bool CrossesElement(const SurfacePoints::Element& element, const Eigen::Vector3f
   const float h_end = element.normal.dot(end_voxel_center_map - element.mean_m);
   const float margin = 0.5f * resolution_m * element.normal.cwiseAbs().sum();
   if (!((h_start > 0.0f && h_end < -margin) || (h_start < 0.0f && h_end > margin))) return false;
-  const Eigen::Vector3f crossing =
-      sensor_map + (h_start / (h_start - h_end)) * (end_voxel_center_map - sensor_map);
+  const Eigen::Vector3f crossing = sensor_map + (h_start / (h_start - h_end)) * (end_voxel_center_map - sensor_map);
   const float radius = SurfacePoints::kPatchRadius * resolution_m;
   return (crossing - element.mean_m).squaredNorm() <= radius * radius;
 }
@@ -83,12 +81,12 @@ bool SurfaceDistanceLayer::RayCrossesSurface(const Site& site, const Eigen::Vect
 }
 
 struct SurfaceDistanceLayer::WorkBlock {
-  Eigen::Vector3i key = Eigen::Vector3i::Zero();                       // block coordinates
+  Eigen::Vector3i key = Eigen::Vector3i::Zero();                      // block coordinates
   std::array<std::uint16_t, DistanceField::kBlockCells> sq_distance;  // to the nearest occupied voxel centre (voxels^2)
   std::array<Site*, DistanceField::kBlockCells> owner;                // that voxel
-  bool dirty = true;                                                   // to recompute at the next export
+  bool dirty = true;                                                  // to recompute at the next export
   std::array<std::uint64_t, DistanceField::kBlockCells / 64> dirty_cells{};  // ... these cells of it
-  std::shared_ptr<const DistanceField::Block> exported;               // as of the last export (null: all clamp)
+  std::shared_ptr<const DistanceField::Block> exported;                      // as of the last export (null: all clamp)
 
   // Marks a cell for recomputation at the next export.
   void Touch(std::size_t offset) {
@@ -215,7 +213,8 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
                                  std::vector<Site*>* freed) {
   // Rays in key units from the sensor to the centre of each return's voxel,
   // that voxel excluded (RayWalk).
-  const Eigen::Vector3d origin = sensor_map.cast<double>() / options_.resolution_m + Eigen::Vector3d::Constant(kKeyOffset);
+  const Eigen::Vector3d origin =
+      sensor_map.cast<double>() / options_.resolution_m + Eigen::Vector3d::Constant(kKeyOffset);
   // Rays fan out from one sensor: most cross the blocks other rays just
   // crossed. A direct-mapped cache saves their hash look-ups; masks change
   // between scans (hits), so it starts empty.
@@ -251,9 +250,8 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
     });
   }
   // A deterministic order for the refills.
-  std::sort(freed->begin(), freed->end(), [](const Site* a, const Site* b) {
-    return SurfacePoints::Pack(a->key) < SurfacePoints::Pack(b->key);
-  });
+  std::sort(freed->begin(), freed->end(),
+            [](const Site* a, const Site* b) { return SurfacePoints::Pack(a->key) < SurfacePoints::Pack(b->key); });
 }
 
 void SurfaceDistanceLayer::EnableDistances() {
@@ -305,7 +303,7 @@ void SurfaceDistanceLayer::Refill(Site* site) {
       block->sq_distance[static_cast<std::size_t>(i)] = kFar;
       block->Touch(static_cast<std::size_t>(i));
       released.push_back(first + Eigen::Vector3i(i >> (2 * DistanceField::kBlockShift),
-                                                  (i >> DistanceField::kBlockShift) & kMask, i & kMask));
+                                                 (i >> DistanceField::kBlockShift) & kMask, i & kMask));
     }
   }
   site->blocks.clear();
@@ -442,8 +440,8 @@ void SurfaceDistanceLayer::Compute(WorkBlock* block, const Eigen::Vector3i& bloc
     }
   }
   block->dirty_cells.fill(0);
-  const bool any = std::any_of(codes->begin(), codes->end(),
-                               [](std::uint16_t code) { return code != DistanceField::kMaxSteps; });
+  const bool any =
+      std::any_of(codes->begin(), codes->end(), [](std::uint16_t code) { return code != DistanceField::kMaxSteps; });
   block->exported = any ? std::move(codes) : nullptr;
   block->dirty = false;
 }
@@ -482,7 +480,8 @@ std::shared_ptr<const DistanceField> SurfaceDistanceLayer::Export(const Eigen::V
   }
   const Eigen::Vector3f origin =
       ((low.cast<double>().array() * kEdge - kKeyOffset) * options_.resolution_m).cast<float>().matrix();
-  auto field = std::make_shared<const DistanceField>(origin, dims, static_cast<float>(options_.resolution_m), clamp_m_, std::move(table), sequence);
+  auto field = std::make_shared<const DistanceField>(origin, dims, static_cast<float>(options_.resolution_m), clamp_m_,
+                                                     std::move(table), sequence);
   counts_.export_s += SecondsSince(computed);
   return field;
 }

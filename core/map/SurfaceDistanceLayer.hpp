@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
 #include <tsl/robin_map.h>
+#include <Eigen/Core>
 
 #include "map/DistanceField.hpp"
 #include "map/DistanceMapOptions.hpp"
@@ -108,12 +108,12 @@ class SurfaceDistanceLayer {
   struct Site {
     Eigen::Vector3i key = Eigen::Vector3i::Zero();
     const SurfacePoints::Element* element = nullptr;  // the live element (SurfacePoints keeps it)
-    SurfacePoints::Element marked;                     // as of the last time its blocks were marked
-    float log_odds = 0.0f;                             // occupancy
-    bool occupied = false;                             // log_odds > 0 (and counted as surface)
-    bool waved = false;                                // owns cells (distances on, occupied)
-    std::uint64_t missed_in = 0;                       // the last scan whose rays crossed it
-    std::vector<WorkBlock*> blocks;                    // blocks where it was ever nearest to a cell
+    SurfacePoints::Element marked;                    // as of the last time its blocks were marked
+    float log_odds = 0.0f;                            // occupancy
+    bool occupied = false;                            // log_odds > 0 (and counted as surface)
+    bool waved = false;                               // owns cells (distances on, occupied)
+    std::uint64_t missed_in = 0;                      // the last scan whose rays crossed it
+    std::vector<WorkBlock*> blocks;                   // blocks where it was ever nearest to a cell
   };
 
   bool KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* key) const;
@@ -121,8 +121,7 @@ class SurfaceDistanceLayer {
   WorkBlock* BlockAt(const Eigen::Vector3i& key, bool create);
   // The misses of the occupied voxels the rays of a scan (its returns'
   // voxels, from sensor_map) cross; *freed receives those that became free.
-  void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
-             std::vector<Site*>* freed);
+  void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed);
   // True when a ray from sensor_map to the return whose voxel centre is
   // end_voxel_center_map passes through site's surface (a miss), not beside it.
   bool RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
@@ -140,22 +139,21 @@ class SurfaceDistanceLayer {
 
   DistanceMapOptions options_;
   float clamp_m_;
-  int reach_;           // a wave goes at most this many voxels from its voxel (the clamp, rounded up, plus one)
-  float log_odds_hit_;  // occupancy update of a return
+  int reach_;            // a wave goes at most this many voxels from its voxel (the clamp, rounded up, plus one)
+  float log_odds_hit_;   // occupancy update of a return
   float log_odds_miss_;  // of a see-through (negative)
   float log_odds_min_;
   float log_odds_max_;
   bool distances_;
   SurfacePoints surfaces_;
-  std::deque<Site> site_store_;                                           // every site (stable addresses)
-  tsl::robin_map<std::uint64_t, Site*, KeyHash> sites_;                                // by packed voxel key
-  tsl::robin_map<std::uint64_t, std::unique_ptr<WorkBlock>, KeyHash> blocks_;          // by packed block key
-  std::size_t occupied_ = 0;                                              // sites occupied now
-  Eigen::Vector3i block_min_ = Eigen::Vector3i::Constant(1 << 20);       // extent of blocks_
+  std::deque<Site> site_store_;                                                // every site (stable addresses)
+  tsl::robin_map<std::uint64_t, Site*, KeyHash> sites_;                        // by packed voxel key
+  tsl::robin_map<std::uint64_t, std::unique_ptr<WorkBlock>, KeyHash> blocks_;  // by packed block key
+  std::size_t occupied_ = 0;                                                   // sites occupied now
+  Eigen::Vector3i block_min_ = Eigen::Vector3i::Constant(1 << 20);             // extent of blocks_
   Eigen::Vector3i block_max_ = Eigen::Vector3i::Constant(-(1 << 20));
   // Per block holding an occupied voxel: which of its voxels are.
-  tsl::robin_map<std::uint64_t, std::array<std::uint64_t, DistanceField::kBlockCells / 64>, KeyHash>
-      occupied_masks_;
+  tsl::robin_map<std::uint64_t, std::array<std::uint64_t, DistanceField::kBlockCells / 64>, KeyHash> occupied_masks_;
   std::uint64_t scans_ = 0;  // scans inserted (stamps Site::missed_in)
   // Carve's cache of occupied_masks_ look-ups (valid during one Carve).
   struct MaskCacheEntry {

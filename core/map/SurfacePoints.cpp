@@ -63,8 +63,8 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
       patch_radius_m_(patch_radius_voxels * resolution_m_),
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 
-void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map,
-                        const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map) {
+void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
+                        const Eigen::Vector3f* sensor_map) {
   Entry* found = Lookup(key);
   if (found == nullptr) {
     std::uint32_t slot = 0;
@@ -92,8 +92,8 @@ void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_m
   entry.weight += 1.0f;
   entry.adds_since_fit += 1.0f;
   entry.sum += d;
-  entry.sum_sq += (Eigen::Matrix<float, 6, 1>() << d.x() * d.x(), d.x() * d.y(), d.x() * d.z(),
-                   d.y() * d.y(), d.y() * d.z(), d.z() * d.z())
+  entry.sum_sq += (Eigen::Matrix<float, 6, 1>() << d.x() * d.x(), d.x() * d.y(), d.x() * d.z(), d.y() * d.y(),
+                   d.y() * d.z(), d.z() * d.z())
                       .finished();
   if (sensor_map != nullptr) {
     const Eigen::Vector3f view = *sensor_map - p_map;
@@ -118,16 +118,14 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
         // Shift the neighbour's moments by its centre offset o:
         // sum d' = sum d + w o, sum d' d'^T = sum d d^T + o sum^T + sum o^T + w o o^T.
         const Eigen::Vector3f o =
-            Eigen::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz)) *
-            resolution_m_;
+            Eigen::Vector3f(static_cast<float>(dx), static_cast<float>(dy), static_cast<float>(dz)) * resolution_m_;
         const Eigen::Vector3f s = n.sum + n.weight * o;
         pooled.weight += n.weight;
         pooled.sum += s;
         // o s^T + s o^T - w o o^T, with s the shifted sum, equals the middle terms.
-        const Eigen::Matrix3f cross =
-            o * s.transpose() + s * o.transpose() - n.weight * o * o.transpose();
-        pooled.sum_sq += n.sum_sq + (Eigen::Matrix<float, 6, 1>() << cross(0, 0), cross(0, 1),
-                                     cross(0, 2), cross(1, 1), cross(1, 2), cross(2, 2))
+        const Eigen::Matrix3f cross = o * s.transpose() + s * o.transpose() - n.weight * o * o.transpose();
+        pooled.sum_sq += n.sum_sq + (Eigen::Matrix<float, 6, 1>() << cross(0, 0), cross(0, 1), cross(0, 2), cross(1, 1),
+                                     cross(1, 2), cross(2, 2))
                                         .finished();
         pooled.sum_view += n.sum_view;
       }
@@ -141,8 +139,7 @@ void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_cent
   if (found == nullptr) return;
   Entry& entry = *found;
   entry.element.mean_m = voxel_center_map + entry.sum / entry.weight;
-  const float refit_after =
-      entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
+  const float refit_after = entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
   const bool refit = !entry.has_element || entry.adds_since_fit >= refit_after;
   entry.has_element = true;
   if (!refit) return;

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <deque>
+#include <functional>
 #include <vector>
 
-#include <Eigen/Core>
 #include <tsl/robin_map.h>
+#include <Eigen/Core>
 
 namespace unimap::map {
 
@@ -34,8 +34,8 @@ class SurfacePoints {
   struct Element {
     Eigen::Vector3f mean_m = Eigen::Vector3f::Zero();  // mean of the voxel's returns
     Eigen::Vector3f normal = Eigen::Vector3f::Zero();  // unit plane normal when planar
-    bool planar = false;    // the returns span a plane: distances are to the disk
-    bool oriented = false;  // normal points to the side the sensor saw the surface from
+    bool planar = false;                               // the returns span a plane: distances are to the disk
+    bool oriented = false;                             // normal points to the side the sensor saw the surface from
   };
 
   // Returns counted in full before the average becomes exponential.
@@ -66,8 +66,7 @@ class SurfacePoints {
 
   // The packed form of a 16-bit octree key (x, y, z).
   static std::uint64_t Pack(const Eigen::Vector3i& key) {
-    return (static_cast<std::uint64_t>(key.x() & 0xffff) << 32) |
-           (static_cast<std::uint64_t>(key.y() & 0xffff) << 16) |
+    return (static_cast<std::uint64_t>(key.x() & 0xffff) << 32) | (static_cast<std::uint64_t>(key.y() & 0xffff) << 16) |
            static_cast<std::uint64_t>(key.z() & 0xffff);
   }
 
@@ -116,12 +115,12 @@ class SurfacePoints {
   // Running moments of one voxel's returns, relative to the voxel centre
   // (small numbers, so float keeps sub-millimetre precision anywhere).
   struct Entry {
-    float weight = 0.0f;                              // returns counted (<= kMaxWeight)
-    Eigen::Vector3f sum = Eigen::Vector3f::Zero();    // sum of offsets
+    float weight = 0.0f;                                                     // returns counted (<= kMaxWeight)
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();                           // sum of offsets
     Eigen::Matrix<float, 6, 1> sum_sq = Eigen::Matrix<float, 6, 1>::Zero();  // xx xy xz yy yz zz
-    Eigen::Vector3f sum_view = Eigen::Vector3f::Zero();  // sum of unit vectors to the sensor
-    float adds_since_fit = 0.0f;                      // returns added since the plane fit
-    bool has_element = false;                         // element is valid
+    Eigen::Vector3f sum_view = Eigen::Vector3f::Zero();                      // sum of unit vectors to the sensor
+    float adds_since_fit = 0.0f;                                             // returns added since the plane fit
+    bool has_element = false;                                                // element is valid
     Element element;
   };
 

@@ -15,7 +15,6 @@ namespace unimap::map {
 // have to shrink that box to options.max_edt_cells, or when the box or the
 // centre leave the octree's key range; the box then follows the sensor.
 std::optional<DistanceMapOptions> WholeMapOptions(const std::vector<Eigen::Vector3f>& points_map,
-                                                  const DistanceMapOptions& options,
-                                                  const Eigen::Vector3f& center_map);
+                                                  const DistanceMapOptions& options, const Eigen::Vector3f& center_map);
 
 }  // namespace unimap::map

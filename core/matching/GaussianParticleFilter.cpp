@@ -104,27 +104,26 @@ GaussianParticleFilter::~GaussianParticleFilter() = default;
 
 GpfResult GaussianParticleFilter::Match(const Eigen::Isometry3d& T_map_body_predicted,
                                         const Matrix6d& predicted_covariance,
-                                        const std::vector<Eigen::Vector3f>& points_body,
-                                        const DistanceQuery& field, double max_predicted_distance_m,
-                                        double max_predicted_distance_per_range) {
+                                        const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                                        double max_predicted_distance_m, double max_predicted_distance_per_range) {
   return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m,
                    max_predicted_distance_per_range, nullptr);
 }
 
 GpfResult GaussianParticleFilter::MatchFrom(const Eigen::Isometry3d& T_map_body_predicted,
                                             const Matrix6d& predicted_covariance,
-                                            const std::vector<Eigen::Vector3f>& points_body,
-                                            const DistanceQuery& field, double max_predicted_distance_m,
-                                            const Vector6d& start, double max_predicted_distance_per_range) {
+                                            const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                                            double max_predicted_distance_m, const Vector6d& start,
+                                            double max_predicted_distance_per_range) {
   return MatchImpl(T_map_body_predicted, predicted_covariance, points_body, field, max_predicted_distance_m,
                    max_predicted_distance_per_range, &start);
 }
 
 GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_predicted,
                                             const Matrix6d& predicted_covariance,
-                                            const std::vector<Eigen::Vector3f>& points_body,
-                                            const DistanceQuery& field, double max_predicted_distance_m,
-                                            double max_predicted_distance_per_range, const Vector6d* start) {
+                                            const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
+                                            double max_predicted_distance_m, double max_predicted_distance_per_range,
+                                            const Vector6d* start) {
   GpfResult result;
   // Where the points are looked up before matching: the prediction, or the start given.
   const Eigen::Isometry3d T_map_body_gate =
@@ -132,8 +131,7 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
   const auto downsample_start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector3f> points =
       VoxelDownsample(points_body, options_.voxel_size_m, options_.max_points, options_.seed + scans_matched_);
-  result.downsample_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - downsample_start).count();
+  result.downsample_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - downsample_start).count();
   ++scans_matched_;
   result.points_used = static_cast<int>(points.size());
   std::vector<PlanePoint> plane_points;
@@ -144,8 +142,8 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
     points.clear();
   }
   if (max_predicted_distance_m > 0.0 && !points.empty()) {
-    result.points_unseen = DropUnseen(T_map_body_gate, field, max_predicted_distance_m, max_predicted_distance_per_range,
-                                     &points);
+    result.points_unseen =
+        DropUnseen(T_map_body_gate, field, max_predicted_distance_m, max_predicted_distance_per_range, &points);
     unmeasured += result.points_unseen;
   }
   if (points.empty() && plane_points.empty()) {
@@ -172,8 +170,9 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
     return result;
   }
   const Eigen::MatrixXd L = llt.matrixL();
-  if (start != nullptr) return RefineFrom(T_map_body_predicted, S, dims, *start, points, plane_points, field,
-                                          unmeasured, std::move(result));
+  if (start != nullptr)
+    return RefineFrom(T_map_body_predicted, S, dims, *start, points, plane_points, field, unmeasured,
+                      std::move(result));
 
   const int K = options_.num_particles;
   auto& ws = *workspace_;
@@ -207,7 +206,8 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
   const double max_log = *std::max_element(ws.log_weights.begin(), ws.log_weights.end());
   std::vector<double> w(static_cast<std::size_t>(K));
   double sum_w = 0.0;
-  for (int k = 0; k < K; ++k) sum_w += (w[static_cast<std::size_t>(k)] = std::exp(ws.log_weights[static_cast<std::size_t>(k)] - max_log));
+  for (int k = 0; k < K; ++k)
+    sum_w += (w[static_cast<std::size_t>(k)] = std::exp(ws.log_weights[static_cast<std::size_t>(k)] - max_log));
   double sum_w2 = 0.0;
   for (auto& wk : w) {
     wk /= sum_w;
@@ -242,9 +242,9 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
   result.posterior_covariance = S_p;
   if (options_.refine_iterations > 0) {
     // Refine on the analytic prior N(0, S) (not its sample estimate), from the GPF mean.
-    ApplyRefinement(FullPrior(S, dims), dims, RefineOnPosterior(T_map_body_predicted, FullPrior(S, dims), dims, mu_p,
-                                                                  points, plane_points, field, unmeasured,
-                                                                  options_.refine_iterations),
+    ApplyRefinement(FullPrior(S, dims), dims,
+                    RefineOnPosterior(T_map_body_predicted, FullPrior(S, dims), dims, mu_p, points, plane_points, field,
+                                      unmeasured, options_.refine_iterations),
                     &result);
   }
   if (!result.refined) {
@@ -258,13 +258,10 @@ GpfResult GaussianParticleFilter::MatchImpl(const Eigen::Isometry3d& T_map_body_
   return result;
 }
 
-PoseRefinement GaussianParticleFilter::RefineOnPosterior(const Eigen::Isometry3d& T_map_body_predicted,
-                                                         const Matrix6d& prior, const std::vector<int>& dims,
-                                                         const Vector6d& start,
-                                                         const std::vector<Eigen::Vector3f>& points,
-                                                         const std::vector<PlanePoint>& plane_points,
-                                                         const DistanceQuery& field, int unmeasured,
-                                                         int iterations) const {
+PoseRefinement GaussianParticleFilter::RefineOnPosterior(
+    const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& prior, const std::vector<int>& dims,
+    const Vector6d& start, const std::vector<Eigen::Vector3f>& points, const std::vector<PlanePoint>& plane_points,
+    const DistanceQuery& field, int unmeasured, int iterations) const {
   const PoseRefiner refiner(options_.point_sigma_m, options_.clamp_distance_m, options_.effective_points, iterations);
   return refiner.Refine(T_map_body_predicted, Vector6d::Zero(), prior, start, dims, points, plane_points, field,
                         unmeasured);

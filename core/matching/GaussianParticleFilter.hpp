@@ -16,19 +16,19 @@ namespace unimap::matching {
 
 // Outcome of matching one scan.
 struct GpfResult {
-  bool ok = false;                        // false: see reason (no points, degenerate covariance)
+  bool ok = false;  // false: see reason (no points, degenerate covariance)
   std::string reason;
-  Vector6d sample_mean = Vector6d::Zero();        // mu_s of the drawn particles, [dp, dtheta]
-  Matrix6d sample_covariance = Matrix6d::Zero();  // S_s
-  Vector6d posterior_mean = Vector6d::Zero();     // mu_p, likelihood-weighted
+  Vector6d sample_mean = Vector6d::Zero();           // mu_s of the drawn particles, [dp, dtheta]
+  Matrix6d sample_covariance = Matrix6d::Zero();     // S_s
+  Vector6d posterior_mean = Vector6d::Zero();        // mu_p, likelihood-weighted
   Matrix6d posterior_covariance = Matrix6d::Zero();  // S_p
-  PseudoMeasurement measurement;          // (z, R) for Eskf::UpdatePoseError
-  double effective_sample_size = 0.0;     // 1 / sum w^2
-  int points_used = 0;                    // after downsampling
-  int points_unseen = 0;                  // of those: beyond max_predicted_distance_m, not measured
-  int refine_iterations = 0;              // accepted Gauss-Newton steps (GpfOptions::refine_iterations)
-  bool refined = false;                   // posterior_* are the refined Laplace posterior
-  double downsample_s = 0.0;              // wall time of the scan's voxel filter (part of Match)
+  PseudoMeasurement measurement;                     // (z, R) for Eskf::UpdatePoseError
+  double effective_sample_size = 0.0;                // 1 / sum w^2
+  int points_used = 0;                               // after downsampling
+  int points_unseen = 0;                             // of those: beyond max_predicted_distance_m, not measured
+  int refine_iterations = 0;                         // accepted Gauss-Newton steps (GpfOptions::refine_iterations)
+  bool refined = false;                              // posterior_* are the refined Laplace posterior
+  double downsample_s = 0.0;                         // wall time of the scan's voxel filter (part of Match)
 };
 
 // Gaussian particle filter scan matcher (Bry et al. 2012): samples pose
@@ -81,8 +81,7 @@ class GaussianParticleFilter {
                        GpfResult result) const;
   GpfResult MatchImpl(const Eigen::Isometry3d& T_map_body_predicted, const Matrix6d& predicted_covariance,
                       const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field,
-                      double max_predicted_distance_m, double max_predicted_distance_per_range,
-                      const Vector6d* start);
+                      double max_predicted_distance_m, double max_predicted_distance_per_range, const Vector6d* start);
   GpfOptions options_;
   std::mt19937_64 rng_;
   std::uint64_t scans_matched_ = 0;

@@ -9,8 +9,7 @@ bool GpfOptions::IsValid(std::string* why) const {
     *why = "num_particles must be at least 10";
     return false;
   }
-  if (!(point_sigma_m > 0.0) || !(clamp_distance_m > 0.0) || !(voxel_size_m >= 0.0) ||
-      !(effective_points > 0.0)) {
+  if (!(point_sigma_m > 0.0) || !(clamp_distance_m > 0.0) || !(voxel_size_m >= 0.0) || !(effective_points > 0.0)) {
     *why = "point_sigma_m, clamp_distance_m and effective_points must be positive, voxel_size_m >= 0";
     return false;
   }

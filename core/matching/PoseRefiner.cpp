@@ -35,18 +35,16 @@ PoseRefiner::PoseRefiner(double sigma_m, double clamp_m, double effective_points
 
 PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
                                    const Matrix6d& prior_covariance, const Vector6d& start,
-                                   const std::vector<int>& active_dims,
-                                   const std::vector<Eigen::Vector3f>& points_body,
+                                   const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
                                    const DistanceQuery& field) const {
   return Refine(T_map_body_predicted, prior_mean, prior_covariance, start, active_dims, points_body, {}, field);
 }
 
 PoseRefinement PoseRefiner::Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
                                    const Matrix6d& prior_covariance, const Vector6d& start,
-                                   const std::vector<int>& active_dims,
-                                   const std::vector<Eigen::Vector3f>& points_body,
-                                   const std::vector<PlanePoint>& plane_points,
-                                   const DistanceQuery& field, int unmeasured_points) const {
+                                   const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
+                                   const std::vector<PlanePoint>& plane_points, const DistanceQuery& field,
+                                   int unmeasured_points) const {
   PoseRefinement out;
   const int n = static_cast<int>(points_body.size());
   const int measured = n + static_cast<int>(plane_points.size());

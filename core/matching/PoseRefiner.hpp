@@ -12,14 +12,14 @@ namespace unimap::matching {
 
 // Outcome of refining one pose error.
 struct PoseRefinement {
-  bool ok = false;                        // false: see reason (no points, singular normal equations)
+  bool ok = false;  // false: see reason (no points, singular normal equations)
   std::string reason;
-  Vector6d mean = Vector6d::Zero();       // MAP pose error [dp, dtheta] (p + dp, q * Exp(dtheta))
-  Matrix6d covariance = Matrix6d::Zero();  // Laplace posterior (P^-1 + H)^-1 at the MAP
+  Vector6d mean = Vector6d::Zero();         // MAP pose error [dp, dtheta] (p + dp, q * Exp(dtheta))
+  Matrix6d covariance = Matrix6d::Zero();   // Laplace posterior (P^-1 + H)^-1 at the MAP
   Matrix6d information = Matrix6d::Zero();  // H: the scan's (tempered) Gauss-Newton information at the MAP
-  int iterations = 0;                     // accepted Gauss-Newton steps
-  double initial_cost = 0.0;              // negative log posterior at the start
-  double final_cost = 0.0;                // ... at the MAP (never above initial_cost)
+  int iterations = 0;                       // accepted Gauss-Newton steps
+  double initial_cost = 0.0;                // negative log posterior at the start
+  double final_cost = 0.0;                  // ... at the MAP (never above initial_cost)
 };
 
 // Gauss-Newton refinement of a pose error on a distance field: minimises the
@@ -45,17 +45,15 @@ class PoseRefiner {
   // dimensions optimised (others stay at start and get no information);
   // points_body: the (downsampled) scan.
   PoseRefinement Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
-                        const Matrix6d& prior_covariance, const Vector6d& start,
-                        const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
-                        const DistanceQuery& field) const;
+                        const Matrix6d& prior_covariance, const Vector6d& start, const std::vector<int>& active_dims,
+                        const std::vector<Eigen::Vector3f>& points_body, const DistanceQuery& field) const;
   // The same with points tied to planes as well (PlanePoint): their d_i is
   // the distance to their plane and g_i its normal; n counts both kinds and
   // unmeasured_points (as in ScanLikelihood).
   PoseRefinement Refine(const Eigen::Isometry3d& T_map_body_predicted, const Vector6d& prior_mean,
-                        const Matrix6d& prior_covariance, const Vector6d& start,
-                        const std::vector<int>& active_dims, const std::vector<Eigen::Vector3f>& points_body,
-                        const std::vector<PlanePoint>& plane_points, const DistanceQuery& field,
-                        int unmeasured_points = 0) const;
+                        const Matrix6d& prior_covariance, const Vector6d& start, const std::vector<int>& active_dims,
+                        const std::vector<Eigen::Vector3f>& points_body, const std::vector<PlanePoint>& plane_points,
+                        const DistanceQuery& field, int unmeasured_points = 0) const;
 
  private:
   double sigma_m_;

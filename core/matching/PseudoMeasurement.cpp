@@ -5,9 +5,8 @@
 
 namespace unimap::matching {
 
-PseudoMeasurement RecoverPseudoMeasurement(const Vector6d& mu_s, const Matrix6d& S_s,
-                                           const Vector6d& mu_p, const Matrix6d& S_p,
-                                           double min_information_ratio) {
+PseudoMeasurement RecoverPseudoMeasurement(const Vector6d& mu_s, const Matrix6d& S_s, const Vector6d& mu_p,
+                                           const Matrix6d& S_p, double min_information_ratio) {
   PseudoMeasurement out;
   const Eigen::LLT<Matrix6d> llt_s(S_s);
   const Eigen::LLT<Matrix6d> llt_p(S_p);

@@ -44,8 +44,8 @@ double ScanLikelihood::LogLikelihood(const DistanceQuery& field, const Eigen::Is
   return -static_cast<double>(sum_sq * inv_two_sigma_sq_) * effective_points_ / total;
 }
 
-void ScanLikelihood::LogLikelihoods(const DistanceQuery& field, const std::vector<Eigen::Isometry3d>& poses,
-                                    int first, int last, const std::vector<Eigen::Vector3f>& points_body,
+void ScanLikelihood::LogLikelihoods(const DistanceQuery& field, const std::vector<Eigen::Isometry3d>& poses, int first,
+                                    int last, const std::vector<Eigen::Vector3f>& points_body,
                                     const std::vector<PlanePoint>& plane_points, int unmeasured_points,
                                     double* log_likelihoods) const {
   const int count = last - first;

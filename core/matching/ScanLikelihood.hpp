@@ -20,16 +20,15 @@ class ScanLikelihood {
 
   // Scratch buffers are resized as needed (one set per thread).
   double LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
-                       const std::vector<Eigen::Vector3f>& points_body,
-                       std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances) const;
+                       const std::vector<Eigen::Vector3f>& points_body, std::vector<Eigen::Vector3f>* scratch_points,
+                       std::vector<float>* scratch_distances) const;
   // The same over the points measured in the field and those tied to planes;
   // n counts both and unmeasured_points, scan points that carry no
   // measurement (without a plane under GpfOptions::planes_only, or too far
   // from the map at the prediction: GaussianParticleFilter::Match), so a
   // scan whose points are mostly unmeasurable weighs less.
   double LogLikelihood(const DistanceQuery& field, const Eigen::Isometry3d& T_map_body,
-                       const std::vector<Eigen::Vector3f>& points_body,
-                       const std::vector<PlanePoint>& plane_points,
+                       const std::vector<Eigen::Vector3f>& points_body, const std::vector<PlanePoint>& plane_points,
                        std::vector<Eigen::Vector3f>* scratch_points, std::vector<float>* scratch_distances,
                        int unmeasured_points = 0) const;
 

@@ -12,8 +12,8 @@ std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
   return VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())));
 }
 
-std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
-                                             int max_points, std::uint64_t seed) {
+std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m, int max_points,
+                                             std::uint64_t seed) {
   std::vector<Eigen::Vector3f> kept;
   if (voxel_m > 0.0) {
     const double inv_voxel = 1.0 / voxel_m;

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include <Eigen/Core>
 #include <tsl/robin_set.h>
+#include <Eigen/Core>
 
 namespace unimap::matching {
 
@@ -35,8 +35,8 @@ using VoxelKeySet = tsl::robin_set<std::uint64_t, VoxelKeyHash>;
 // Keeps one point per voxel (the first one seen, so the result is
 // deterministic and a real measurement), then at most max_points of them
 // chosen with a seeded generator (0 = keep all).
-std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m,
-                                             int max_points, std::uint64_t seed);
+std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m, int max_points,
+                                             std::uint64_t seed);
 
 // One point per voxel: the mean of the points in it, in the order the
 // voxels are first seen (deterministic).

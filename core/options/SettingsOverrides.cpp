@@ -63,8 +63,7 @@ class Writer : public FieldVisitor {
         reason = wrong;
       }
     } else if (auto** i = std::get_if<int*>(&field)) {
-      if (whole != nullptr && *whole >= std::numeric_limits<int>::min() &&
-          *whole <= std::numeric_limits<int>::max()) {
+      if (whole != nullptr && *whole >= std::numeric_limits<int>::min() && *whole <= std::numeric_limits<int>::max()) {
         **i = static_cast<int>(*whole);
       } else {
         reason = wrong;
@@ -152,7 +151,8 @@ void SettingsOverrides::CheckKeys(const VisitAll& visit) const {
         }
       }
     }
-    throw Error(i, "unknown key" + (closest.empty() ? std::string() : " (did you mean " + section_ + "." + closest + "?)") +
+    throw Error(i, "unknown key" +
+                       (closest.empty() ? std::string() : " (did you mean " + section_ + "." + closest + "?)") +
                        "; `unimap config --platform FILE` lists every key");
   }
 }

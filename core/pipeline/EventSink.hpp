@@ -5,8 +5,8 @@
 #include <Eigen/Geometry>
 
 #include "io/ScanRecord.hpp"
-#include "unimap/ImuSample.hpp"
 #include "unimap/EncoderSample.hpp"
+#include "unimap/ImuSample.hpp"
 #include "unimap/OdometrySample.hpp"
 
 namespace unimap::pipeline {
@@ -14,27 +14,27 @@ namespace unimap::pipeline {
 // How the localiser got one scan's pose (`unimap run --trace`, trace.csv).
 // Poses are [dp, dtheta] in the error coordinates of the ESKF (m, rad).
 struct ScanDiagnostics {
-  int points_used = 0;                                      // after downsampling
-  int points_unseen = 0;                                    // of those: not measured (far from the map)
-  double effective_sample_size = 0.0;                       // of the particle weights
-  double mahalanobis_sq = 0.0;                              // the update's innovation, squared
-  double inflation = 1.0;                                   // the prediction's covariance was scaled by this
-  double inlier_share = 0.0;                                // scan points on the map at the matched pose
+  int points_used = 0;                 // after downsampling
+  int points_unseen = 0;               // of those: not measured (far from the map)
+  double effective_sample_size = 0.0;  // of the particle weights
+  double mahalanobis_sq = 0.0;         // the update's innovation, squared
+  double inflation = 1.0;              // the prediction's covariance was scaled by this
+  double inlier_share = 0.0;           // scan points on the map at the matched pose
   Eigen::Matrix<double, 6, 1> correction = Eigen::Matrix<double, 6, 1>::Zero();    // applied to the prediction
   Eigen::Matrix<double, 6, 1> predicted_sd = Eigen::Matrix<double, 6, 1>::Zero();  // prior standard deviations
   Eigen::Matrix<double, 6, 1> measured_sd = Eigen::Matrix<double, 6, 1>::Zero();   // pseudo measurement's
-  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();     // after the update (map frame)
-  Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d::Zero();  // after the update
-  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();  // after the update
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();                          // after the update (map frame)
+  Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d::Zero();                       // after the update
+  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();                       // after the update
 };
 
 // The localised pose of one scan.
 struct ScanPose {
-  double time_s = 0.0;                                      // the scan's reference (end) time
+  double time_s = 0.0;  // the scan's reference (end) time
   Eigen::Isometry3d T_map_body = Eigen::Isometry3d::Identity();
-  bool matched = false;                                     // a GPF update was applied
-  int points = 0;                                           // deskewed body points
-  ScanDiagnostics diagnostics;                              // how it was found
+  bool matched = false;         // a GPF update was applied
+  int points = 0;               // deskewed body points
+  ScanDiagnostics diagnostics;  // how it was found
 };
 
 // What consumes a dataset's events in time order (as DatasetReader::NextEvent

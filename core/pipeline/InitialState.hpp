@@ -14,9 +14,9 @@ namespace unimap::pipeline {
 
 // The filter's first state, from the IMU window at the start of the data.
 struct InitialState {
-  estimation::NavState state;  // at the window's last sample
+  estimation::NavState state;                           // at the window's last sample
   std::optional<estimation::InitialAttitude> attitude;  // the source used, when an initial pose was given
-  std::vector<std::string> notes;  // what the log should say (failed alignment, pose fallback)
+  std::vector<std::string> notes;                       // what the log should say (failed alignment, pose fallback)
   // The IMU's white noise measured at rest, when the window was static and
   // it exceeds the options' sigmas by more than kNoiseMargin (the platform
   // file claims a better IMU than the data shows): the filter's sigmas.

@@ -35,17 +35,15 @@ std::shared_ptr<map::ScanMap> OwnMap(const LocalizerOptions& options, std::uniqu
 }  // namespace
 
 Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
-                     std::unique_ptr<map::DistanceMap> prior_map,
-                     std::optional<Eigen::Isometry3d> initial_pose)
+                     std::unique_ptr<map::DistanceMap> prior_map, std::optional<Eigen::Isometry3d> initial_pose)
     : Localizer(options, std::move(plugin), OwnMap(options, std::move(prior_map)), initial_pose, nullptr) {}
 
-Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
-                     std::shared_ptr<map::ScanMap> map, KeyScanSink on_key_scan)
+Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin, std::shared_ptr<map::ScanMap> map,
+                     KeyScanSink on_key_scan)
     : Localizer(options, std::move(plugin), std::move(map), std::nullopt, std::move(on_key_scan)) {}
 
-Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin,
-                     std::shared_ptr<map::ScanMap> map, std::optional<Eigen::Isometry3d> initial_pose,
-                     KeyScanSink on_key_scan)
+Localizer::Localizer(LocalizerOptions options, std::shared_ptr<PayloadPlugin> plugin, std::shared_ptr<map::ScanMap> map,
+                     std::optional<Eigen::Isometry3d> initial_pose, KeyScanSink on_key_scan)
     : options_(Checked(options)),
       plugin_(std::move(plugin)),
       map_(std::move(map)),
@@ -73,8 +71,8 @@ void Localizer::AddImu(const ImuSample& sample) {
   ++stats_.imu_samples;
   if (prior_) return;  // predictions come from the motion prior
   if (!(sample.time_s > last_imu_time_s_) || !sample.accel_m_s2.allFinite() || !sample.gyro_rad_s.allFinite()) {
-    Skip(&stats_.imu_out_of_order, "IMU sample at " + std::to_string(sample.time_s) +
-                                       " s is not after the previous one or not finite: skipped");
+    Skip(&stats_.imu_out_of_order,
+         "IMU sample at " + std::to_string(sample.time_s) + " s is not after the previous one or not finite: skipped");
     return;
   }
   last_imu_time_s_ = sample.time_s;
@@ -94,8 +92,8 @@ void Localizer::AddImu(const ImuSample& sample) {
 
 void Localizer::AddEncoder(const EncoderSample& sample) {
   if (!encoder_.empty() && !(sample.time_s > encoder_.end_time_s())) {
-    Skip(&stats_.encoder_rejected, "encoder sample at " + std::to_string(sample.time_s) +
-                                       " s is not after the previous one: skipped");
+    Skip(&stats_.encoder_rejected,
+         "encoder sample at " + std::to_string(sample.time_s) + " s is not after the previous one: skipped");
     return;
   }
   try {
@@ -147,8 +145,8 @@ void Localizer::PredictTo(double t_end) {
     // No increment (e.g. an odometry gap): hold the pose with the
     // uncertainty of an unknown motion at the constant-velocity sigmas, so
     // the match can still find it; counted, not skipped.
-    Skip(&stats_.scans_no_motion, "scan ending at " + std::to_string(t_end) + " s: " + prediction.reason +
-                                      "; pose held with a wide prior");
+    Skip(&stats_.scans_no_motion,
+         "scan ending at " + std::to_string(t_end) + " s: " + prediction.reason + "; pose held with a wide prior");
     prediction.T_prev_next.setIdentity();
     prediction.covariance = estimation::UnmodeledMotionCovariance(options_.motion, t_end - eskf_.state().time_s);
   }
@@ -198,12 +196,13 @@ void Localizer::ProcessReadyScans(bool finishing) {
   while (!pending_.empty()) {
     const io::ScanRecord& scan = pending_.front();
     const double t_end = io::ScanEndTime(scan);
-    const double newest = std::max({last_imu_time_s_, last_odometry_time_s_,
-                                    encoder_.empty() ? -1e300 : encoder_.end_time_s()});
+    const double newest =
+        std::max({last_imu_time_s_, last_odometry_time_s_, encoder_.empty() ? -1e300 : encoder_.end_time_s()});
     const bool stale = newest - t_end >= options_.max_scan_latency_s;
     // Without an IMU the filter starts at the first scan its prior covers
     // (or, with no prior data at all, once the scan is stale).
-    if (!eskf_.initialized() && prior_ && (prior_->ReadyFor(t_end) || finishing || stale)) InitializeWithoutImu(io::ScanStartTime(scan));
+    if (!eskf_.initialized() && prior_ && (prior_->ReadyFor(t_end) || finishing || stale))
+      InitializeWithoutImu(io::ScanStartTime(scan));
     if (!eskf_.initialized()) {
       if (!finishing) return;
       Skip(&stats_.scans_unmatched, "scan at " + std::to_string(t_end) + " s: no IMU to initialise: skipped");
@@ -214,11 +213,10 @@ void Localizer::ProcessReadyScans(bool finishing) {
     const bool encoder_ready = !plugin_->UsesEncoder() || (!encoder_.empty() && encoder_.end_time_s() >= t_end);
     if (!finishing && !(motion_ready && encoder_ready) && !stale) return;
     if (plugin_->UsesEncoder() && !encoder_ready && !finishing) {
-      Skip(&stats_.scans_no_encoder,
-           "scan ending at " + std::to_string(t_end) + " s has no encoder coverage: skipped");
+      Skip(&stats_.scans_no_encoder, "scan ending at " + std::to_string(t_end) + " s has no encoder coverage: skipped");
     } else if (t_end < last_scan_end_s_) {
-      Skip(&stats_.scans_out_of_order, "scan ending at " + std::to_string(t_end) +
-                                           " s ends before the previous scan: skipped");
+      Skip(&stats_.scans_out_of_order,
+           "scan ending at " + std::to_string(t_end) + " s ends before the previous scan: skipped");
     } else {
       ProcessScan(scan);
     }

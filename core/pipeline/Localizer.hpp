@@ -18,8 +18,8 @@
 #include "pipeline/EventSink.hpp"
 #include "pipeline/LocalizerOptions.hpp"
 #include "pipeline/PoseHistory.hpp"
-#include "pipeline/ScanMatcher.hpp"
 #include "pipeline/ScanAccumulator.hpp"
+#include "pipeline/ScanMatcher.hpp"
 #include "pipeline/StageTimes.hpp"
 #include "unimap/EncoderTrack.hpp"
 #include "unimap/PayloadPlugin.hpp"
@@ -28,10 +28,10 @@ namespace unimap::pipeline {
 
 // One 3D scan (N scans accumulated) as inserted into the map.
 struct KeyScan {
-  double time_s = 0.0;                                          // end time of its last scan
+  double time_s = 0.0;                                             // end time of its last scan
   Eigen::Isometry3d T_local_body = Eigen::Isometry3d::Identity();  // body pose then (local frame)
-  std::vector<Eigen::Vector3f> points_local;                    // one point per map voxel, local frame
-  Eigen::Vector3f sensor_origin_local = Eigen::Vector3f::Zero();  // mean sensor position of its scans
+  std::vector<Eigen::Vector3f> points_local;                       // one point per map voxel, local frame
+  Eigen::Vector3f sensor_origin_local = Eigen::Vector3f::Zero();   // mean sensor position of its scans
 };
 
 // Receives each 3D scan right after its insertion into the map.
@@ -40,25 +40,25 @@ using KeyScanSink = std::function<void(KeyScan&&)>;
 // Counts of what happened to the input (skips are counted, never fatal).
 struct LocalizerStats {
   std::size_t imu_samples = 0;
-  std::size_t imu_out_of_order = 0;   // not after the previous sample: skipped
-  std::size_t imu_gaps = 0;           // gaps above max_imu_gap_s bridged by holding the last sample
-  std::size_t encoder_rejected = 0;   // not after the previous sample or non-finite: skipped
-  std::size_t scans = 0;              // scans received
-  std::size_t scans_matched = 0;      // with a GPF update
-  std::size_t scans_unmatched = 0;    // localised by the IMU only (no map yet, too few points, GPF failure)
-  std::size_t scans_searched = 0;     // matched with a wide search (uncertain prediction or poor match)
-  std::size_t scans_reacquired = 0;   // of those, placed where the search found them (prediction was off)
-  std::size_t scans_bad_input = 0;    // rejected by the payload (NaN points, times, ...): skipped
-  std::size_t scans_no_encoder = 0;   // never covered by encoder samples: skipped
+  std::size_t imu_out_of_order = 0;    // not after the previous sample: skipped
+  std::size_t imu_gaps = 0;            // gaps above max_imu_gap_s bridged by holding the last sample
+  std::size_t encoder_rejected = 0;    // not after the previous sample or non-finite: skipped
+  std::size_t scans = 0;               // scans received
+  std::size_t scans_matched = 0;       // with a GPF update
+  std::size_t scans_unmatched = 0;     // localised by the IMU only (no map yet, too few points, GPF failure)
+  std::size_t scans_searched = 0;      // matched with a wide search (uncertain prediction or poor match)
+  std::size_t scans_reacquired = 0;    // of those, placed where the search found them (prediction was off)
+  std::size_t scans_bad_input = 0;     // rejected by the payload (NaN points, times, ...): skipped
+  std::size_t scans_no_encoder = 0;    // never covered by encoder samples: skipped
   std::size_t scans_out_of_order = 0;  // ending before an already processed scan: skipped
-  std::size_t scans_no_motion = 0;    // no motion prediction (wheel-odometry gap): pose held, wide prior
-  std::size_t odometry_samples = 0;   // wheel-odometry readings received
-  std::size_t beams_dropped = 0;      // 2D beams without a valid return
-  std::size_t map_insertions = 0;     // 3D scans inserted into the map
-  std::size_t map_errors = 0;         // map updates refused (pose outside the map's range): skipped
+  std::size_t scans_no_motion = 0;     // no motion prediction (wheel-odometry gap): pose held, wide prior
+  std::size_t odometry_samples = 0;    // wheel-odometry readings received
+  std::size_t beams_dropped = 0;       // 2D beams without a valid return
+  std::size_t map_insertions = 0;      // 3D scans inserted into the map
+  std::size_t map_errors = 0;          // map updates refused (pose outside the map's range): skipped
   std::optional<estimation::InitialAttitude> initial_attitude;  // used for a given initial pose
-  std::vector<std::string> messages;  // the first few skip reasons, for the log
-  StageTimes times;                   // the localiser's stages (map stages: the map's UpdateTimes)
+  std::vector<std::string> messages;                            // the first few skip reasons, for the log
+  StageTimes times;  // the localiser's stages (map stages: the map's UpdateTimes)
 };
 
 // Odometry-mode localiser (docs/design.md 1.1-1.3): IMU -> ESKF prediction; each

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace unimap::pipeline {
 
 bool LocalizerOptions::IsValid(std::string* why) const {
@@ -48,10 +47,11 @@ bool LocalizerOptions::IsValid(std::string* why) const {
     *why = "max_predicted_distance_m must be >= 0";
     return false;
   }
-  if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 ||
-      !(max_scan_latency_s > 0.0) || !(max_initial_accel_bias_m_s2 > 0.0)) {
-    *why = "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
-           "max_scan_latency_s and max_initial_accel_bias_m_s2 > 0";
+  if (scans_per_3d_scan < 1 || !(static_init_s >= 0.0) || min_points_to_match < 1 || !(max_scan_latency_s > 0.0) ||
+      !(max_initial_accel_bias_m_s2 > 0.0)) {
+    *why =
+        "scans_per_3d_scan and min_points_to_match must be >= 1, static_init_s >= 0, "
+        "max_scan_latency_s and max_initial_accel_bias_m_s2 > 0";
     return false;
   }
   return true;

@@ -20,8 +20,8 @@ const graph::LoopClosureMatcher& LoopClosureFinder::Matcher(std::size_t index) {
     }
   }
   ++stats_.matchers_built;
-  cache_.emplace_front(index, std::make_unique<graph::LoopClosureMatcher>(retired_[index].submap.points_submap,
-                                                                          matcher_options_));
+  cache_.emplace_front(
+      index, std::make_unique<graph::LoopClosureMatcher>(retired_[index].submap.points_submap, matcher_options_));
   while (cache_.size() > static_cast<std::size_t>(search_.max_cached_matchers)) cache_.pop_back();
   return *cache_.front().second;
 }
@@ -30,10 +30,9 @@ std::vector<LoopClosure> LoopClosureFinder::Search(int key_scan, const std::vect
                                                    const Eigen::Isometry3d& T_world_body, double path_m,
                                                    const TrajectoryGraph& graph) {
   std::vector<LoopClosure> closures;
-  const std::size_t eligible =
-      retired_.size() > static_cast<std::size_t>(search_.skip_recent_submaps)
-          ? retired_.size() - static_cast<std::size_t>(search_.skip_recent_submaps)
-          : 0;
+  const std::size_t eligible = retired_.size() > static_cast<std::size_t>(search_.skip_recent_submaps)
+                                   ? retired_.size() - static_cast<std::size_t>(search_.skip_recent_submaps)
+                                   : 0;
   // Candidates: (distance to the submap's origin, index, radius).
   struct Candidate {
     double distance_m;
@@ -51,7 +50,8 @@ std::vector<LoopClosure> LoopClosureFinder::Search(int key_scan, const std::vect
     const double radius_m =
         std::min(search_.max_radius_m, search_.min_radius_m + search_.radius_per_path_m * traveled_m);
     const double distance_m = (T_world_submap.translation() - T_world_body.translation()).norm();
-    if (distance_m <= radius_m + search_.submap_reach_m) candidates.push_back({distance_m, i, radius_m, T_world_submap});
+    if (distance_m <= radius_m + search_.submap_reach_m)
+      candidates.push_back({distance_m, i, radius_m, T_world_submap});
   }
   if (candidates.empty()) return closures;
   std::sort(candidates.begin(), candidates.end(),

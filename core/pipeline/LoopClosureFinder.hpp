@@ -16,10 +16,10 @@ namespace unimap::pipeline {
 
 // Counts of the loop-closure search.
 struct LoopSearchStats {
-  std::size_t searches = 0;    // 3D scans tried against at least one candidate
-  std::size_t candidates = 0;  // scan-submap matches attempted
-  std::size_t accepted = 0;    // matches that passed the matcher's checks
-  std::size_t rejected = 0;    // matches that did not
+  std::size_t searches = 0;        // 3D scans tried against at least one candidate
+  std::size_t candidates = 0;      // scan-submap matches attempted
+  std::size_t accepted = 0;        // matches that passed the matcher's checks
+  std::size_t rejected = 0;        // matches that did not
   std::size_t matchers_built = 0;  // submap matchers constructed (cache misses)
 };
 
@@ -39,8 +39,7 @@ class LoopClosureFinder {
   // Tries the key scan (points in the body frame) against the candidates;
   // returns the accepted closures (at most one per candidate submap).
   std::vector<LoopClosure> Search(int key_scan, const std::vector<Eigen::Vector3f>& points_body,
-                                  const Eigen::Isometry3d& T_world_body, double path_m,
-                                  const TrajectoryGraph& graph);
+                                  const Eigen::Isometry3d& T_world_body, double path_m, const TrajectoryGraph& graph);
   const LoopSearchStats& stats() const { return stats_; }
   std::size_t retired_count() const { return retired_.size(); }
   // Messages about accepted closures (for the log), since the last call.

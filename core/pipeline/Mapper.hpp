@@ -22,19 +22,19 @@ namespace unimap::pipeline {
 
 // What the mapping back end did.
 struct MapperStats {
-  std::size_t key_scans = 0;          // 3D scans (pose-graph scan nodes)
-  int submaps = 0;                    // submaps started
-  std::size_t retired_submaps = 0;    // submaps retired (kept for loop closure)
-  std::size_t loop_closures = 0;      // accepted loop-closure constraints
-  std::size_t optimizations = 0;      // pose-graph optimisations finished and applied
-  std::size_t optimization_failures = 0;  // optimisations that reported !ok (result ignored)
-  double optimization_s = 0.0;        // total solver time
-  double loop_search_s = 0.0;         // total time searching and matching loop closures
+  std::size_t key_scans = 0;                // 3D scans (pose-graph scan nodes)
+  int submaps = 0;                          // submaps started
+  std::size_t retired_submaps = 0;          // submaps retired (kept for loop closure)
+  std::size_t loop_closures = 0;            // accepted loop-closure constraints
+  std::size_t optimizations = 0;            // pose-graph optimisations finished and applied
+  std::size_t optimization_failures = 0;    // optimisations that reported !ok (result ignored)
+  double optimization_s = 0.0;              // total solver time
+  double loop_search_s = 0.0;               // total time searching and matching loop closures
   double first_loop_closure_time_s = -1.0;  // time of the 3D scan of the first accepted closure (-1: none)
-  LoopSearchStats loop_search;        // candidate counts
-  std::size_t key_scan_points = 0;    // points of all key scans (one per map voxel each)
-  std::size_t map_points_kept = 0;    // of those, kept for MapPoints: each local-frame voxel once
-  std::vector<std::string> messages;  // loop closures and optimisation notes (first few)
+  LoopSearchStats loop_search;              // candidate counts
+  std::size_t key_scan_points = 0;          // points of all key scans (one per map voxel each)
+  std::size_t map_points_kept = 0;          // of those, kept for MapPoints: each local-frame voxel once
+  std::vector<std::string> messages;        // loop closures and optimisation notes (first few)
 };
 
 // An accepted loop closure, for drawing: where the closing 3D scan was and
@@ -42,10 +42,10 @@ struct MapperStats {
 // and, for checking it against ground truth, the motion it claims between
 // the body when the submap was started and the closing scan.
 struct LoopClosureLink {
-  double time_s = 0.0;                                  // the closing 3D scan's time
+  double time_s = 0.0;                                     // the closing 3D scan's time
   Eigen::Vector3d scan_world = Eigen::Vector3d::Zero();    // its body position
   Eigen::Vector3d submap_world = Eigen::Vector3d::Zero();  // the matched submap's origin
-  double submap_start_time_s = 0.0;  // time of the key scan that started the submap
+  double submap_start_time_s = 0.0;                        // time of the key scan that started the submap
   // Measured: T_start_body = T_start_submap (odometry when the submap was
   // started) * T_submap_body (the loop-closure match).
   Eigen::Isometry3d T_start_body = Eigen::Isometry3d::Identity();
@@ -98,10 +98,10 @@ class Mapper : public EventSink {
   TrajectoryGraph graph_;
   LoopClosureFinder finder_;
   graph::BackgroundOptimizer optimizer_;
-  std::vector<ScanPose> local_poses_;                       // every pose so far (local frame)
+  std::vector<ScanPose> local_poses_;                          // every pose so far (local frame)
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
-  matching::VoxelKeySet held_voxels_;  // voxels (local frame) key_points_body_ holds
-  double path_m_ = 0.0;                                     // distance travelled by the key scans
+  matching::VoxelKeySet held_voxels_;                          // voxels (local frame) key_points_body_ holds
+  double path_m_ = 0.0;                                        // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;
   struct AcceptedClosure {
@@ -111,13 +111,13 @@ class Mapper : public EventSink {
     Eigen::Isometry3d T_submap_body;  // measured
   };
   struct SubmapStart {
-    double time_s;                      // key scan that started the submap
-    Eigen::Isometry3d T_body_submap;    // the submap's frame seen from that key scan's body
+    double time_s;                    // key scan that started the submap
+    Eigen::Isometry3d T_body_submap;  // the submap's frame seen from that key scan's body
   };
-  std::map<int, SubmapStart> submap_starts_;                // by submap id
-  std::vector<AcceptedClosure> closures_;                   // for LoopClosureLinks
+  std::map<int, SubmapStart> submap_starts_;  // by submap id
+  std::vector<AcceptedClosure> closures_;     // for LoopClosureLinks
   MapperStats stats_;
-  std::unique_ptr<Localizer> localizer_;                    // last: its callback uses the members above
+  std::unique_ptr<Localizer> localizer_;  // last: its callback uses the members above
 };
 
 }  // namespace unimap::pipeline

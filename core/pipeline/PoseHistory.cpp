@@ -26,8 +26,8 @@ Eigen::Isometry3d PoseHistory::At(double time_s) const {
   };
   if (time_s <= poses_.front().time_s) return make(poses_.front().p, poses_.front().q);
   if (time_s >= poses_.back().time_s) return make(poses_.back().p, poses_.back().q);
-  const auto it = std::lower_bound(poses_.begin(), poses_.end(), time_s,
-                                   [](const Entry& e, double t) { return e.time_s < t; });
+  const auto it =
+      std::lower_bound(poses_.begin(), poses_.end(), time_s, [](const Entry& e, double t) { return e.time_s < t; });
   const Entry& b = *it;
   const Entry& a = *(it - 1);
   const double alpha = (time_s - a.time_s) / (b.time_s - a.time_s);

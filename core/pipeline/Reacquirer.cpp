@@ -33,7 +33,8 @@ ReacquireOptions Checked(const ReacquireOptions& options) {
 
 std::vector<Eigen::Vector3f> StridedSubset(const std::vector<Eigen::Vector3f>& points, int max_points) {
   if (max_points <= 0 || static_cast<int>(points.size()) <= max_points) return points;
-  const std::size_t stride = (points.size() + static_cast<std::size_t>(max_points) - 1) / static_cast<std::size_t>(max_points);
+  const std::size_t stride =
+      (points.size() + static_cast<std::size_t>(max_points) - 1) / static_cast<std::size_t>(max_points);
   std::vector<Eigen::Vector3f> subset;
   subset.reserve(static_cast<std::size_t>(max_points));
   for (std::size_t i = 0; i < points.size(); i += stride) subset.push_back(points[i]);
@@ -50,7 +51,9 @@ bool ReacquireOptions::IsValid(std::string* why) const {
   const double positive[] = {coarse_clamp_m, inlier_distance_voxels, wide_sigma_voxels, wide_sigma_rad, max_yaw_rad};
   for (const double v : positive) {
     if (!(v > 0.0) || !std::isfinite(v)) {
-      *why = "coarse_clamp_m, inlier_distance_voxels, wide_sigma_voxels, wide_sigma_rad and max_yaw_rad must be finite and > 0";
+      *why =
+          "coarse_clamp_m, inlier_distance_voxels, wide_sigma_voxels, wide_sigma_rad and max_yaw_rad must be finite "
+          "and > 0";
       return false;
     }
   }
@@ -101,7 +104,8 @@ matching::Vector6d Reacquirer::GridSearch(const Eigen::Isometry3d& T_map_body_pr
     for (int i = -nx; i <= nx; ++i) {
       for (int j = -nx; j <= nx; ++j) {
         const Eigen::Vector3f t =
-            (T_map_body_predicted.translation() + Eigen::Vector3d(i * position_step, j * position_step, 0.0)).cast<float>();
+            (T_map_body_predicted.translation() + Eigen::Vector3d(i * position_step, j * position_step, 0.0))
+                .cast<float>();
         double cost = 0.0;
         for (const Eigen::Vector3f& p : moved) {
           const float d = std::min(coarse_->Distance(p + t), clamp);
@@ -109,8 +113,9 @@ matching::Vector6d Reacquirer::GridSearch(const Eigen::Isometry3d& T_map_body_pr
         }
         // Ties go to the candidate nearest the prediction (the loops' order is symmetric).
         const double offset = std::abs(i) + std::abs(j) + std::abs(k);
-        if (cost < best_cost - 1e-9 || (std::abs(cost - best_cost) <= 1e-9 &&
-                                        offset < std::abs(best(0) / position_step) + std::abs(best(1) / position_step))) {
+        if (cost < best_cost - 1e-9 ||
+            (std::abs(cost - best_cost) <= 1e-9 &&
+             offset < std::abs(best(0) / position_step) + std::abs(best(1) / position_step))) {
           best_cost = cost;
           best << i * position_step, j * position_step, 0.0, dtheta;
         }

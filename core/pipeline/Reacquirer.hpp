@@ -38,11 +38,11 @@ struct ReacquireOptions {
 
 // What a search found.
 struct ReacquireResult {
-  bool ok = false;                                         // a pose was found (see reason otherwise)
+  bool ok = false;  // a pose was found (see reason otherwise)
   std::string reason;
-  matching::Vector6d error = matching::Vector6d::Zero();   // its error from the prediction [dp, dtheta]
-  double inliers_predicted = 0.0;                          // share of the points on the map at the prediction
-  double inliers_found = 0.0;                              // ... at the pose found
+  matching::Vector6d error = matching::Vector6d::Zero();  // its error from the prediction [dp, dtheta]
+  double inliers_predicted = 0.0;                         // share of the points on the map at the prediction
+  double inliers_found = 0.0;                             // ... at the pose found
 };
 
 // Finds where a scan lies on the map when the prediction may be far off
@@ -80,7 +80,7 @@ class Reacquirer {
                                 const std::vector<Eigen::Vector3f>& points_body) const;
 
   ReacquireOptions options_;
-  std::uint64_t coarse_sequence_ = 0;               // the snapshot coarse_ was built from
+  std::uint64_t coarse_sequence_ = 0;  // the snapshot coarse_ was built from
   const map::DistanceField* coarse_source_ = nullptr;
   std::shared_ptr<const map::DistanceField> coarse_;
 };

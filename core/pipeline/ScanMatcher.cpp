@@ -20,8 +20,7 @@ ScanMatcher::ScanMatcher(const LocalizerOptions& options)
     : options_(options), gpf_(options.gpf), reacquirer_(options.reacquire) {}
 
 ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceField>& field,
-                                   const Eigen::Isometry3d& T_predicted,
-                                   const matching::Matrix6d& predicted_covariance,
+                                   const Eigen::Isometry3d& T_predicted, const matching::Matrix6d& predicted_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
   const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighborhood_planes);
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
@@ -32,8 +31,7 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   // surface they pull the pose towards it. A sweep's gate allows for the
   // prediction's own uncertainty; a line's is fixed (it is never searched).
   const bool widen = options_.max_predicted_distance_m > 0.0 && !line;
-  const double gate_m =
-      options_.max_predicted_distance_m + (widen ? options_.sweep_gate_sigmas * position_sigma : 0.0);
+  const double gate_m = options_.max_predicted_distance_m + (widen ? options_.sweep_gate_sigmas * position_sigma : 0.0);
   const double gate_per_range = widen ? options_.sweep_gate_sigmas * rotation_sigma : 0.0;
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
                     rotation_sigma > options_.reacquire.wide_sigma_rad;
@@ -45,8 +43,8 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   if (line) {
     out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m, gate_per_range);
     if (out.match.ok) {
-      out.inliers = reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean),
-                                            subset);
+      out.inliers =
+          reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
     }
     return out;
   }
@@ -60,9 +58,8 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
     }
   }
   out.searched = true;
-  const ReacquireResult found =
-      reacquirer_.Search(field, T_predicted, predicted_covariance, subset, options_.gpf.point_sigma_m,
-                         options_.gpf.clamp_distance_m);
+  const ReacquireResult found = reacquirer_.Search(field, T_predicted, predicted_covariance, subset,
+                                                   options_.gpf.point_sigma_m, options_.gpf.clamp_distance_m);
   // An uncertain prediction says little: the search's pose is taken unless
   // it holds fewer of the scan. A confident one is replaced only by a pose
   // holding clearly more of it.
@@ -72,8 +69,8 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
     if (wide) {  // nothing better found: match as usual
       out.match = gpf_.Match(T_predicted, predicted_covariance, points_body, query, gate_m, gate_per_range);
       if (out.match.ok) {
-        out.inliers = reacquirer_.InlierShare(
-            *field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
+        out.inliers =
+            reacquirer_.InlierShare(*field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset);
       }
     }
     return out;
@@ -82,8 +79,8 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   // kCorrectionSigmas correction, and refine from there.
   const double mahalanobis_sq = found.error.dot(predicted_covariance.ldlt().solve(found.error));
   out.inflation = std::max(1.0, mahalanobis_sq / (kCorrectionSigmas * kCorrectionSigmas));
-  out.match = gpf_.MatchFrom(T_predicted, out.inflation * predicted_covariance, points_body, query, gate_m,
-                             found.error, gate_per_range);
+  out.match = gpf_.MatchFrom(T_predicted, out.inflation * predicted_covariance, points_body, query, gate_m, found.error,
+                             gate_per_range);
   out.reacquired = out.match.ok;
   out.inliers = found.inliers_found;
   return out;

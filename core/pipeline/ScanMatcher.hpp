@@ -40,8 +40,8 @@ class ScanMatcher {
   // that limit grows by sweep_gate_sigmas of the prediction (position, and
   // the point's range times rotation).
   ScanMatchResult Match(const std::shared_ptr<const map::DistanceField>& field, const Eigen::Isometry3d& T_predicted,
-                        const matching::Matrix6d& predicted_covariance,
-                        const std::vector<Eigen::Vector3f>& points_body, bool line);
+                        const matching::Matrix6d& predicted_covariance, const std::vector<Eigen::Vector3f>& points_body,
+                        bool line);
 
  private:
   LocalizerOptions options_;

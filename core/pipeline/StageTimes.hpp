@@ -8,16 +8,16 @@ namespace unimap::pipeline {
 // measured on that thread; offline runs wait for it, so the stages add up to
 // about the processing time.
 struct StageTimes {
-  double deskew_s = 0.0;           // line-scan conversion and the plugin's deskew
-  double downsample_s = 0.0;       // voxel filters: scans before matching, 3D scans before insertion
-  double match_s = 0.0;            // particle filter and refinement (without its downsampling)
-  double eskf_s = 0.0;             // IMU propagation, motion prediction, pose updates
-  double map_surface_s = 0.0;      // returns into the map's surface (elements / occupancy)
-  double map_distance_s = 0.0;     // distance-field updates
-  double map_export_s = 0.0;       // publishing fields to the matcher
-  double loop_search_s = 0.0;      // loop-closure candidates and matching
-  double optimization_s = 0.0;     // pose-graph optimisation (background solver time)
-  double outputs_s = 0.0;          // trajectories, map files, evaluation and report
+  double deskew_s = 0.0;        // line-scan conversion and the plugin's deskew
+  double downsample_s = 0.0;    // voxel filters: scans before matching, 3D scans before insertion
+  double match_s = 0.0;         // particle filter and refinement (without its downsampling)
+  double eskf_s = 0.0;          // IMU propagation, motion prediction, pose updates
+  double map_surface_s = 0.0;   // returns into the map's surface (elements / occupancy)
+  double map_distance_s = 0.0;  // distance-field updates
+  double map_export_s = 0.0;    // publishing fields to the matcher
+  double loop_search_s = 0.0;   // loop-closure candidates and matching
+  double optimization_s = 0.0;  // pose-graph optimisation (background solver time)
+  double outputs_s = 0.0;       // trajectories, map files, evaluation and report
 };
 
 // Adds the time from its construction to its destruction to *total_s.

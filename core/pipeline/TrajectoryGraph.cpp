@@ -83,8 +83,8 @@ void TrajectoryGraph::ApplyOptimized(const std::vector<Eigen::Isometry3d>& T_wor
     }
   }
   if (newest < 0) return;
-  T_world_local_ = T_world_node[static_cast<std::size_t>(newest)] *
-                   T_local_node_[static_cast<std::size_t>(newest)].inverse();
+  T_world_local_ =
+      T_world_node[static_cast<std::size_t>(newest)] * T_local_node_[static_cast<std::size_t>(newest)].inverse();
   for (std::size_t i = n; i < graph_.NodeCount(); ++i) {
     graph_.SetPose(static_cast<int>(i), T_world_local_ * T_local_node_[i]);
   }

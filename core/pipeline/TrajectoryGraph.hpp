@@ -12,9 +12,9 @@ namespace unimap::pipeline {
 
 // A loop closure: a 3D scan matched against an older (retired) submap.
 struct LoopClosure {
-  int key_scan = 0;                                        // TrajectoryGraph key-scan index
-  int submap_id = 0;                                       // SubmapManager id
-  Eigen::Isometry3d T_submap_body = Eigen::Isometry3d::Identity();  // measured
+  int key_scan = 0;                                                                  // TrajectoryGraph key-scan index
+  int submap_id = 0;                                                                 // SubmapManager id
+  Eigen::Isometry3d T_submap_body = Eigen::Isometry3d::Identity();                   // measured
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();  // [dp, dtheta]
 };
 
@@ -64,8 +64,8 @@ class TrajectoryGraph {
   graph::PoseGraph graph_;
   Eigen::Matrix<double, 6, 6> sqrt_information_;
   std::vector<KeyScanNode> key_scans_;
-  std::map<int, int> submap_nodes_;                // submap id -> node
-  std::vector<Eigen::Isometry3d> T_local_node_;    // as first added, per node
+  std::map<int, int> submap_nodes_;              // submap id -> node
+  std::vector<Eigen::Isometry3d> T_local_node_;  // as first added, per node
   Eigen::Isometry3d T_world_local_ = Eigen::Isometry3d::Identity();
   std::size_t loop_closures_ = 0;
 };

@@ -34,9 +34,9 @@ constexpr const char* kMaxRange = "lidar.max_range_m";
 
 // The line scanner on the servo, as the "lidar.*" keys describe it.
 struct LineScanner {
-  double scan_rate_hz = 40.0;         // lines per second (mirror revolutions per second)
-  double fov_deg = 270.0;             // first to last beam, centred on the scanner's +x
-  std::int64_t beams = 1081;          // beams per line, first and last included
+  double scan_rate_hz = 40.0;             // lines per second (mirror revolutions per second)
+  double fov_deg = 270.0;                 // first to last beam, centred on the scanner's +x
+  std::int64_t beams = 1081;              // beams per line, first and last included
   unimap::RangeLimits limits{0.1, 30.0};  // valid returns (m)
 };
 
@@ -68,8 +68,7 @@ unimap::CoreParameters DefaultCore() {
 
 void AddScannerKeys(const LineScanner& s, unimap::ParameterSet* set) {
   set->Add({kScanRate, "", "lines per second (Hz)", s.scan_rate_hz, 0.1, 1000.0, {}});
-  set->Add({kFov, "", "angle from the first to the last beam, centred on +x (deg)", s.fov_deg, 1.0,
-            360.0, {}});
+  set->Add({kFov, "", "angle from the first to the last beam, centred on +x (deg)", s.fov_deg, 1.0, 360.0, {}});
   set->Add({kBeams, "", "beams per line, first and last included (count)", s.beams, 2, 100000, {}});
   set->Add({kMinRange, "", "shortest valid return (m)", s.limits.min_range_m, 0.0, 1000.0, {}});
   set->Add({kMaxRange, "", "longest valid return (m)", s.limits.max_range_m, 0.01, 1000.0, {}});
@@ -111,8 +110,7 @@ unimap::LineScan RebuildLine(const unimap::RawScan& scan, const LineScanner& s) 
     if (std::fabs(p.z()) > 1e-6 * std::max(1.0, p.norm())) {
       throw unimap::InputError(label + "off the scan plane (z != 0)");
     }
-    const double beam =
-        std::round((std::atan2(p.y(), p.x()) - line.angle_min_rad) / line.angle_increment_rad);
+    const double beam = std::round((std::atan2(p.y(), p.x()) - line.angle_min_rad) / line.angle_increment_rad);
     if (!(beam >= 0.0 && beam < static_cast<double>(s.beams))) {
       throw unimap::InputError(label + "outside the field of view");
     }
@@ -171,8 +169,7 @@ class NoddingPlugin final : public unimap::PayloadPlugin {
     return servo_.MotorAngle(encoder.AngleAt(time_s));
   }
 
-  Eigen::Isometry3d BodyFromLidarAt(const unimap::EncoderTrack& encoder,
-                                    double time_s) const override {
+  Eigen::Isometry3d BodyFromLidarAt(const unimap::EncoderTrack& encoder, double time_s) const override {
     return servo_.BodyFromLidar(MotorAngleAt(encoder, time_s));
   }
 
@@ -196,8 +193,7 @@ class NoddingPlugin final : public unimap::PayloadPlugin {
       none.dropped_out_of_range = out_of_range;
       return none;
     }
-    unimap::BodyScan body =
-        unimap::DeskewScan(converted.scan, T_body_lidar_at, T_world_body_at, scanner_.limits);
+    unimap::BodyScan body = unimap::DeskewScan(converted.scan, T_body_lidar_at, T_world_body_at, scanner_.limits);
     body.dropped_out_of_range += out_of_range;
     return body;
   }

@@ -94,8 +94,8 @@ void WriteTum(const std::string& file, const std::vector<unimap::StampedPose>& p
   for (const unimap::StampedPose& pose : poses) {
     const Eigen::Quaterniond q(pose.T_map_body.linear());
     const Eigen::Vector3d& p = pose.T_map_body.translation();
-    out << pose.time_s << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x() << ' ' << q.y() << ' '
-        << q.z() << ' ' << q.w() << '\n';
+    out << pose.time_s << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z()
+        << ' ' << q.w() << '\n';
   }
   if (!out.flush()) throw unimap::InputError(file + ": cannot be written");
 }
@@ -164,8 +164,8 @@ int main(int argc, char** argv) {
     if (failed) return 1;
     const unimap::MapperStatus status = mapper.Status();
     std::printf("scans: %zu added, %zu processed, %zu matched; %zu 3D scans, %d submaps, %zu loop closures\n",
-                status.scans_added, status.scans_processed, status.scans_matched, status.key_scans,
-                status.submaps, status.loop_closures);
+                status.scans_added, status.scans_processed, status.scans_matched, status.key_scans, status.submaps,
+                status.loop_closures);
     if (!args.odometry_out.empty()) {
       std::vector<unimap::StampedPose> odometry;
       for (const unimap::MapperPose& pose : mapper.Poses()) odometry.push_back({pose.time_s, pose.T_odom_body});

@@ -6,7 +6,7 @@ namespace unimap::payload {
 
 void CoreDefaults::AddTo(ParameterSet* set) const {
   // The reasons in CoreParameters::Keys() order.
-  const std::string* const reasons[] = {&why_n,       &why_m,       &why_i,         &why_sigma_a,
+  const std::string* const reasons[] = {&why_n,       &why_m,          &why_i,        &why_sigma_a,
                                         &why_sigma_g, &why_resolution, &why_max_range};
   const auto& keys = CoreParameters::Keys();
   ParameterSet core;

@@ -9,10 +9,14 @@ constexpr const char* kRate = "motor.rate_rpm";
 
 void MotorModel::AddTo(ParameterSet* set) const {
   mount.AddTo(set);
-  set->Add({kRate, "",
+  set->Add({kRate,
+            "",
             "nominal motor speed; informative (the simulator spins the motor at this rate, "
             "the mapper follows the encoder) (rev/min)",
-            rate_rpm, 0.1, 600.0, {}});
+            rate_rpm,
+            0.1,
+            600.0,
+            {}});
 }
 
 MotorModel MotorModel::FromMap(const ParameterMap& map) {

@@ -12,7 +12,7 @@ namespace unimap::payload {
 // the nominal motor rate. Shared by rotating_3d and rotating_2d, which differ
 // only in defaults and in the LiDAR on the motor.
 struct MotorModel {
-  MotorMount mount;       // T_body_lidar(theta) = T_body_motor * Rot(axis, theta) * T_motor_lidar
+  MotorMount mount;        // T_body_lidar(theta) = T_body_motor * Rot(axis, theta) * T_motor_lidar
   double rate_rpm = 30.0;  // nominal speed (rev/min); informative: the encoder rules
 
   // Adds MotorMount's keys ("extrinsic.body_motor.*", "extrinsic.motor_lidar.*",

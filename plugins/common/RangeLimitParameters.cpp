@@ -9,10 +9,20 @@ constexpr const char* kMaxRange = "lidar.max_range_m";
 }  // namespace
 
 void RangeLimitParameters::AddTo(const RangeLimits& defaults, ParameterSet* set) {
-  set->Add({kMinRange, "", "shortest valid return; closer ones are dropped and counted (m)",
-            defaults.min_range_m, 0.0, 1000.0, {}});
-  set->Add({kMaxRange, "", "longest valid return; farther ones are dropped and counted (m)",
-            defaults.max_range_m, 0.01, 10000.0, {}});
+  set->Add({kMinRange,
+            "",
+            "shortest valid return; closer ones are dropped and counted (m)",
+            defaults.min_range_m,
+            0.0,
+            1000.0,
+            {}});
+  set->Add({kMaxRange,
+            "",
+            "longest valid return; farther ones are dropped and counted (m)",
+            defaults.max_range_m,
+            0.01,
+            10000.0,
+            {}});
 }
 
 RangeLimits RangeLimitParameters::FromMap(const ParameterMap& map) {

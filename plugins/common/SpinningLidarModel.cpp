@@ -18,27 +18,40 @@ constexpr const char* kTiming = "lidar.timing";
 constexpr const char* kTimingAzimuth = "azimuth";
 constexpr const char* kTimingNone = "none";
 
-
 }  // namespace
 
 void SpinningLidarModel::AddTo(ParameterSet* set) const {
-  set->Add({kRings, "", "number of beams (rings) stacked vertically (count)", std::int64_t{rings},
-            1, 256, {}});
-  set->Add({kVerticalFov, "", "elevation of the lowest and the highest beam [min, max] (deg)",
-            std::vector<double>{vertical_fov_min_deg, vertical_fov_max_deg}, -90.0, 90.0, {}});
-  set->Add({kSpinRate, "",
+  set->Add({kRings, "", "number of beams (rings) stacked vertically (count)", std::int64_t{rings}, 1, 256, {}});
+  set->Add({kVerticalFov,
+            "",
+            "elevation of the lowest and the highest beam [min, max] (deg)",
+            std::vector<double>{vertical_fov_min_deg, vertical_fov_max_deg},
+            -90.0,
+            90.0,
+            {}});
+  set->Add({kSpinRate,
+            "",
             "head revolutions per second; a sweep is one revolution and sets the firing time "
             "of points delivered without per-point time (Hz)",
-            timing.spin_rate_hz, 0.1, 100.0, {}});
-  set->Add({kClockwise, "", "head turns clockwise seen from +z (Velodyne heads do)",
-            timing.clockwise, -std::numeric_limits<double>::infinity(),
-            std::numeric_limits<double>::infinity(), {}});
-  set->Add({kTiming, "",
+            timing.spin_rate_hz,
+            0.1,
+            100.0,
+            {}});
+  set->Add({kClockwise,
+            "",
+            "head turns clockwise seen from +z (Velodyne heads do)",
+            timing.clockwise,
+            -std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity(),
+            {}});
+  set->Add({kTiming,
+            "",
             "firing time of points delivered without their own time: azimuth (a spinning head, "
             "from each point's azimuth) or none (a snapshot at the sweep's start time: clouds "
             "already deskewed, non-spinning sensors)",
             std::string(point_timing == Timing::kAzimuth ? kTimingAzimuth : kTimingNone),
-            -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            -std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity(),
             {kTimingAzimuth, kTimingNone}});
   RangeLimitParameters::AddTo(limits, set);
 }

@@ -20,12 +20,12 @@ struct SpinningLidarModel {
     kNone,     // a snapshot: every point at the sweep's start time (clouds already
                // deskewed, e.g. KITTI's, or a non-spinning sensor without point times)
   };
-  int rings = 16;                    // beams stacked vertically
-  double vertical_fov_min_deg = -15.0;  // elevation of the lowest beam (deg)
-  double vertical_fov_max_deg = 15.0;   // elevation of the highest beam (deg)
-  SpinningLidarTiming timing;        // head spin rate and direction (firing order)
+  int rings = 16;                          // beams stacked vertically
+  double vertical_fov_min_deg = -15.0;     // elevation of the lowest beam (deg)
+  double vertical_fov_max_deg = 15.0;      // elevation of the highest beam (deg)
+  SpinningLidarTiming timing;              // head spin rate and direction (firing order)
   Timing point_timing = Timing::kAzimuth;  // "lidar.timing": points without their own time
-  RangeLimits limits{0.4, 100.0};    // valid returns (m)
+  RangeLimits limits{0.4, 100.0};          // valid returns (m)
 
   // Adds "lidar.rings", "lidar.vertical_fov_deg", "lidar.spin_rate_hz",
   // "lidar.clockwise", "lidar.timing", "lidar.min_range_m",
@@ -42,8 +42,7 @@ struct SpinningLidarModel {
   // start_time_s, end_time_s becomes the last firing); with kNone every
   // point is taken at start_time_s, which becomes the reference time.
   // Throws InputError on bad input; errors of the queries propagate.
-  BodyScan Deskew(const RawScan& scan, const MountQuery& T_body_lidar_at,
-                  const MotionQuery& T_world_body_at) const;
+  BodyScan Deskew(const RawScan& scan, const MountQuery& T_body_lidar_at, const MotionQuery& T_world_body_at) const;
 };
 
 }  // namespace unimap::payload

@@ -68,12 +68,9 @@ void Fixed3dPlugin::Configure(const ParameterMap& parameters) {
 
 bool Fixed3dPlugin::UsesEncoder() const { return false; }
 
-double Fixed3dPlugin::MotorAngleAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const {
-  return 0.0;
-}
+double Fixed3dPlugin::MotorAngleAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const { return 0.0; }
 
-Eigen::Isometry3d Fixed3dPlugin::BodyFromLidarAt(const EncoderTrack& /*encoder*/,
-                                                 double /*time_s*/) const {
+Eigen::Isometry3d Fixed3dPlugin::BodyFromLidarAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const {
   return T_body_lidar_;
 }
 

@@ -33,13 +33,12 @@ class Fixed3dPlugin final : public PayloadPlugin {
   // The constant T_body_lidar; the encoder and time are ignored.
   Eigen::Isometry3d BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const override;
   // Firing times from azimuth when the scan has none, then rigid-body deskew.
-  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder,
-                  const MotionQuery& T_world_body_at) const override;
+  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder, const MotionQuery& T_world_body_at) const override;
 
  private:
-  CoreParameters core_;        // the paper's parameters, as configured
-  SpinningLidarModel lidar_;   // lidar.* keys
-  Extrinsic body_lidar_;       // extrinsic.body_lidar.*
+  CoreParameters core_;                                             // the paper's parameters, as configured
+  SpinningLidarModel lidar_;                                        // lidar.* keys
+  Extrinsic body_lidar_;                                            // extrinsic.body_lidar.*
   Eigen::Isometry3d T_body_lidar_ = Eigen::Isometry3d::Identity();  // body_lidar_ as a transform
 };
 

@@ -17,12 +17,10 @@ constexpr double kDegToRad = M_PI / 180.0;
 }  // namespace
 
 void LineScannerModel::AddTo(ParameterSet* set) const {
-  set->Add({kScanRate, "", "lines per second (mirror revolutions per second) (Hz)", scan_rate_hz,
-            0.1, 1000.0, {}});
-  set->Add({kFov, "", "angle from the first to the last beam, centred on the scanner's +x (deg)",
-            fov_deg, 1.0, 360.0, {}});
-  set->Add({kBeams, "", "beams per line, first and last included (count)", std::int64_t{beams}, 2,
-            1000000, {}});
+  set->Add({kScanRate, "", "lines per second (mirror revolutions per second) (Hz)", scan_rate_hz, 0.1, 1000.0, {}});
+  set->Add(
+      {kFov, "", "angle from the first to the last beam, centred on the scanner's +x (deg)", fov_deg, 1.0, 360.0, {}});
+  set->Add({kBeams, "", "beams per line, first and last included (count)", std::int64_t{beams}, 2, 1000000, {}});
   RangeLimitParameters::AddTo(limits, set);
 }
 
@@ -60,8 +58,7 @@ void LineScannerModel::AssignPointTimes(RawScan* scan) const {
     const double azimuth_rad = std::atan2(point.position_m.y(), point.position_m.x());
     const double beam = std::round((azimuth_rad - angle_min_rad) / step_rad);
     if (!(beam >= 0.0 && beam <= last_beam)) {
-      throw InputError("point " + std::to_string(i) + ": azimuth " +
-                       std::to_string(azimuth_rad / kDegToRad) +
+      throw InputError("point " + std::to_string(i) + ": azimuth " + std::to_string(azimuth_rad / kDegToRad) +
                        " deg is outside the scanner's field of view");
     }
     point.time_s = scan->start_time_s + beam * interval_s;

@@ -13,9 +13,9 @@ namespace unimap::payload {
 // (beam 0 at -fov/2, as LaserScan's angle_min). The default values describe
 // a UTM-30LX: 40 Hz, 270 deg, 1081 beams (0.25 deg apart), 0.1..30 m.
 struct LineScannerModel {
-  double scan_rate_hz = 40.0;    // lines (mirror revolutions) per second
-  double fov_deg = 270.0;        // angle from the first to the last beam
-  int beams = 1081;              // beams per line, first and last included
+  double scan_rate_hz = 40.0;     // lines (mirror revolutions) per second
+  double fov_deg = 270.0;         // angle from the first to the last beam
+  int beams = 1081;               // beams per line, first and last included
   RangeLimits limits{0.1, 30.0};  // valid returns (m)
 
   // Adds "lidar.scan_rate_hz", "lidar.fov_deg", "lidar.beams",
@@ -36,8 +36,7 @@ struct LineScannerModel {
   void AssignPointTimes(RawScan* scan) const;
   // Rigid-body deskew of one line (DeskewScan with these range limits),
   // deriving point times first when scan.has_point_time is false.
-  BodyScan Deskew(const RawScan& scan, const MountQuery& T_body_lidar_at,
-                  const MotionQuery& T_world_body_at) const;
+  BodyScan Deskew(const RawScan& scan, const MountQuery& T_body_lidar_at, const MotionQuery& T_world_body_at) const;
 };
 
 }  // namespace unimap::payload

@@ -77,16 +77,14 @@ double Rotating2dPlugin::MotorAngleAt(const EncoderTrack& encoder, double time_s
   return motor_.MotorAngleAt(encoder, time_s);
 }
 
-Eigen::Isometry3d Rotating2dPlugin::BodyFromLidarAt(const EncoderTrack& encoder,
-                                                    double time_s) const {
+Eigen::Isometry3d Rotating2dPlugin::BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const {
   return motor_.BodyFromLidarAt(encoder, time_s);
 }
 
 BodyScan Rotating2dPlugin::Deskew(const RawScan& scan, const EncoderTrack& encoder,
                                   const MotionQuery& T_world_body_at) const {
   return lidar_.Deskew(
-      scan, [this, &encoder](double time_s) { return motor_.BodyFromLidarAt(encoder, time_s); },
-      T_world_body_at);
+      scan, [this, &encoder](double time_s) { return motor_.BodyFromLidarAt(encoder, time_s); }, T_world_body_at);
 }
 
 }  // namespace unimap::payload

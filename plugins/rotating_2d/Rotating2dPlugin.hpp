@@ -40,8 +40,7 @@ class Rotating2dPlugin final : public PayloadPlugin {
   Eigen::Isometry3d BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const override;
   // Beam times from azimuth when the line has none, then rigid-body deskew
   // with the motor angle at every beam's time.
-  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder,
-                  const MotionQuery& T_world_body_at) const override;
+  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder, const MotionQuery& T_world_body_at) const override;
 
  private:
   CoreParameters core_;     // the paper's parameters, as configured

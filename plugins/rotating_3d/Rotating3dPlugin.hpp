@@ -39,8 +39,7 @@ class Rotating3dPlugin final : public PayloadPlugin {
   Eigen::Isometry3d BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const override;
   // Firing times from azimuth (in the LiDAR frame) when the scan has none,
   // then rigid-body deskew with the motor angle at every point's time.
-  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder,
-                  const MotionQuery& T_world_body_at) const override;
+  BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder, const MotionQuery& T_world_body_at) const override;
 
  private:
   CoreParameters core_;       // the paper's parameters, as configured

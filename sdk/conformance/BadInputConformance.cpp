@@ -22,8 +22,7 @@ TEST_P(PayloadConformanceTest, BadScansRejected) {
   } catch (const std::exception& e) {
     FAIL() << Label() << ": Deskew of a valid synthetic scan threw: " << e.what();
   }
-  const auto expect_input_error = [&](const RawScan& scan, const EncoderTrack& track,
-                                      const std::string& what) {
+  const auto expect_input_error = [&](const RawScan& scan, const EncoderTrack& track, const std::string& what) {
     try {
       plugin().Deskew(scan, track, motion);
       ADD_FAILURE() << Label() << ": Deskew accepted " << what;
@@ -78,8 +77,7 @@ TEST_P(PayloadConformanceTest, EncoderTimeGoingBackwardsRejected) {
   const std::vector<EncoderSample> repeated = {{0.00, 0.0}, {0.01, 0.033}, {0.01, 0.066}};
   EXPECT_THROW(EncoderTrack{repeated}, InputError) << "a repeated encoder time must throw InputError";
   EncoderTrack track(std::vector<EncoderSample>{{0.00, 0.0}, {0.01, 0.033}});
-  EXPECT_THROW(track.Append({0.005, 0.066}), InputError)
-      << "appending an earlier encoder sample must throw InputError";
+  EXPECT_THROW(track.Append({0.005, 0.066}), InputError) << "appending an earlier encoder sample must throw InputError";
 }
 
 }  // namespace unimap::conformance

@@ -79,8 +79,7 @@ TEST_P(PayloadConformanceTest, DeskewExactOnSyntheticMotion) {
     FAIL() << Label() << ": Deskew of a valid synthetic scan threw: " << e.what();
   }
   EXPECT_EQ(out.reference_time_s, scan.end_time_s) << Label() << ": reference time is not the scan end";
-  EXPECT_EQ(out.dropped_out_of_range, 0u)
-      << Label() << ": dropped returns at 5-10 m range as out of range";
+  EXPECT_EQ(out.dropped_out_of_range, 0u) << Label() << ": dropped returns at 5-10 m range as out of range";
   ASSERT_EQ(out.points.size(), scan.points.size()) << Label() << ": Deskew dropped or added points";
 
   double worst = 0.0;
@@ -94,10 +93,10 @@ TEST_P(PayloadConformanceTest, DeskewExactOnSyntheticMotion) {
       worst_index = i;
     }
   }
-  EXPECT_LT(worst, kDeskewTolerance_m)
-      << Label() << ": point " << worst_index << " (fired at t = " << scan.points[worst_index].time_s
-      << " s) deskewed to (" << out.points[worst_index].position_m.transpose() << "), expected ("
-      << expected[worst_index].transpose() << "): off by " << worst << " m";
+  EXPECT_LT(worst, kDeskewTolerance_m) << Label() << ": point " << worst_index
+                                       << " (fired at t = " << scan.points[worst_index].time_s << " s) deskewed to ("
+                                       << out.points[worst_index].position_m.transpose() << "), expected ("
+                                       << expected[worst_index].transpose() << "): off by " << worst << " m";
 }
 
 // Configure(defaults) twice gives the output of once, bit for bit; so does

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/SVD>
 #include <gtest/gtest.h>
+#include <Eigen/SVD>
 
 #include "PayloadConformanceTest.hpp"
 #include "SyntheticRig.hpp"
@@ -55,8 +55,8 @@ TEST_P(PayloadConformanceTest, EncoderInterpolationExact) {
     const double theta_ref = plugin().MotorAngleAt(track, t_ref);
 
     // Direction s from a 0.33 rad step.
-    const double ratio = std::remainder(plugin().MotorAngleAt(track, t_ref + 0.1) - theta_ref, 2.0 * M_PI) /
-                         (kRate * 0.1);
+    const double ratio =
+        std::remainder(plugin().MotorAngleAt(track, t_ref + 0.1) - theta_ref, 2.0 * M_PI) / (kRate * 0.1);
     ASSERT_NEAR(std::fabs(ratio), 1.0, kExactTolerance)
         << Label() << ": the motor angle changes " << ratio
         << " times as fast as the encoder; it must follow it one to one";
@@ -87,8 +87,8 @@ TEST_P(PayloadConformanceTest, EncoderInterpolationExact) {
 
       const Eigen::Isometry3d T_body_lidar = plugin().BodyFromLidarAt(track, t);
       const Eigen::Matrix3d R = T_body_lidar.linear();
-      worst_rigid = std::max({worst_rigid, (R.transpose() * R - Eigen::Matrix3d::Identity()).norm(),
-                              std::fabs(R.determinant() - 1.0)});
+      worst_rigid = std::max(
+          {worst_rigid, (R.transpose() * R - Eigen::Matrix3d::Identity()).norm(), std::fabs(R.determinant() - 1.0)});
       const Eigen::Isometry3d D = T_body_lidar * T_ref_inv;
       const double rotation_error =
           (D.linear() - Eigen::AngleAxisd(expected_delta, axis_body).toRotationMatrix()).norm();
@@ -103,17 +103,16 @@ TEST_P(PayloadConformanceTest, EncoderInterpolationExact) {
       }
     }
     EXPECT_LT(worst_angle, kExactTolerance)
-        << Label() << ": MotorAngleAt(t) - MotorAngleAt(" << t_ref << ") differs from " << s
-        << " * " << kRate << " rad/s * (t - " << t_ref << ") by " << worst_angle
-        << " rad at t = " << t_angle << " s";
+        << Label() << ": MotorAngleAt(t) - MotorAngleAt(" << t_ref << ") differs from " << s << " * " << kRate
+        << " rad/s * (t - " << t_ref << ") by " << worst_angle << " rad at t = " << t_angle << " s";
     EXPECT_LT(worst_rigid, kExactTolerance) << Label() << ": BodyFromLidarAt is not a rigid transform";
     EXPECT_LT(worst_rotation, kExactTolerance)
-        << Label() << ": BodyFromLidarAt(t) * BodyFromLidarAt(" << t_ref << ")^-1 is not a rotation by "
-        << s << " * rate * dt about the fixed body axis (" << axis_body.transpose() << "): off by "
-        << worst_rotation << " at t = " << t_rotation << " s";
+        << Label() << ": BodyFromLidarAt(t) * BodyFromLidarAt(" << t_ref << ")^-1 is not a rotation by " << s
+        << " * rate * dt about the fixed body axis (" << axis_body.transpose() << "): off by " << worst_rotation
+        << " at t = " << t_rotation << " s";
     EXPECT_LT(worst_axis_point, kExactTolerance)
-        << Label() << ": the motor axis line moves in the body frame (point " << on_axis.transpose()
-        << " moved by " << worst_axis_point << " m at t = " << t_axis_point << " s)";
+        << Label() << ": the motor axis line moves in the body frame (point " << on_axis.transpose() << " moved by "
+        << worst_axis_point << " m at t = " << t_axis_point << " s)";
   }
 }
 
@@ -122,8 +121,8 @@ TEST_P(PayloadConformanceTest, EncoderCoverageEnforced) {
   const EncoderTrack track(SyntheticRig::EncoderSamples(SyntheticRig::Wrap::kZeroToTwoPi, 3));
   for (double t : {track.start_time_s() - 0.01, track.end_time_s() + 0.01, -100.0, 1e6}) {
     EXPECT_THROW(plugin().MotorAngleAt(track, t), InputError)
-        << Label() << ": MotorAngleAt(" << t << ") outside encoder coverage [" << track.start_time_s()
-        << ", " << track.end_time_s() << "] must throw InputError";
+        << Label() << ": MotorAngleAt(" << t << ") outside encoder coverage [" << track.start_time_s() << ", "
+        << track.end_time_s() << "] must throw InputError";
     EXPECT_THROW(plugin().BodyFromLidarAt(track, t), InputError)
         << Label() << ": BodyFromLidarAt(" << t << ") outside encoder coverage must throw InputError";
   }

@@ -66,8 +66,8 @@ TEST_P(PayloadConformanceTest, Loads) {
 
 TEST_P(PayloadConformanceTest, Version) {
   EXPECT_EQ(loaded().abi_version, kPayloadAbiVersion)
-      << Label() << " was built against PayloadPlugin ABI " << loaded().abi_version
-      << ", this SDK is ABI " << kPayloadAbiVersion;
+      << Label() << " was built against PayloadPlugin ABI " << loaded().abi_version << ", this SDK is ABI "
+      << kPayloadAbiVersion;
 }
 
 TEST_P(PayloadConformanceTest, DefaultsValidAndSelfConsistent) {
@@ -111,18 +111,15 @@ TEST_P(PayloadConformanceTest, DefaultsValidAndSelfConsistent) {
 TEST_P(PayloadConformanceTest, ConfigureRejectsBadMaps) {
   const ParameterSet defaults = plugin().Defaults();
   const ParameterMap map = defaults.DefaultMap();
-  const auto expect_rejected = [&](const ParameterMap& bad, const std::string& key,
-                                   const std::string& what) {
+  const auto expect_rejected = [&](const ParameterMap& bad, const std::string& key, const std::string& what) {
     try {
       plugin().Configure(bad);
       ADD_FAILURE() << Label() << ": Configure accepted a map with " << what;
     } catch (const ConfigError& e) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos)
-          << Label() << ": the ConfigError for " << what << " does not name the key '" << key
-          << "': " << e.what();
+          << Label() << ": the ConfigError for " << what << " does not name the key '" << key << "': " << e.what();
     } catch (const std::exception& e) {
-      ADD_FAILURE() << Label() << ": Configure threw a non-ConfigError for " << what << ": "
-                    << e.what();
+      ADD_FAILURE() << Label() << ": Configure threw a non-ConfigError for " << what << ": " << e.what();
     }
   };
 
@@ -138,8 +135,7 @@ TEST_P(PayloadConformanceTest, ConfigureRejectsBadMaps) {
     if (OutOfRangeValue(spec, &bad)) {
       ParameterMap out_of_range = map;
       out_of_range.Set(spec.key, bad);
-      expect_rejected(out_of_range, spec.key,
-                      "'" + spec.key + "' out of range (" + ToString(bad) + ")");
+      expect_rejected(out_of_range, spec.key, "'" + spec.key + "' out of range (" + ToString(bad) + ")");
     }
     if (!std::holds_alternative<std::string>(spec.default_value)) {
       ParameterMap wrong_type = map;

@@ -98,8 +98,7 @@ int RunMain(int argc, char** argv, std::vector<std::string> default_plugins) {
     paths.push_back(Normalize(entry));
   }
   if (paths.empty()) {
-    std::cerr << "unimap conformance: no plugin library given (use --plugin=PATH or "
-              << kPluginsEnv << ")\n";
+    std::cerr << "unimap conformance: no plugin library given (use --plugin=PATH or " << kPluginsEnv << ")\n";
     return 2;
   }
   // InitGoogleTest registers the parameterised tests now, evaluating the
@@ -113,7 +112,6 @@ int RunMain(int argc, char** argv, std::vector<std::string> default_plugins) {
 // gtest evaluates this generator when InitGoogleTest registers the
 // parameterised tests (UnitTestImpl::RegisterParameterizedTests), not at
 // static initialisation, so it sees the list RunMain built.
-INSTANTIATE_TEST_SUITE_P(Payload, PayloadConformanceTest, ::testing::ValuesIn(PluginPaths()),
-                         PluginTestName);
+INSTANTIATE_TEST_SUITE_P(Payload, PayloadConformanceTest, ::testing::ValuesIn(PluginPaths()), PluginTestName);
 
 }  // namespace unimap::conformance

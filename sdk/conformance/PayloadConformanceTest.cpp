@@ -11,8 +11,7 @@ void PayloadConformanceTest::SetUp() {
   } catch (const std::exception& e) {
     FAIL() << "cannot load payload plugin '" << GetParam() << "': " << e.what();
   }
-  ASSERT_NE(loaded_.plugin, nullptr) << "PluginLoader::Load('" << GetParam()
-                                     << "') returned no plugin";
+  ASSERT_NE(loaded_.plugin, nullptr) << "PluginLoader::Load('" << GetParam() << "') returned no plugin";
   try {
     loaded_.plugin->Configure(DefaultMap());
   } catch (const std::exception& e) {
@@ -39,8 +38,7 @@ bool PayloadConformanceTest::Identical(const BodyScan& a, const BodyScan& b, std
     for (std::size_t i = 0; i < a.points.size(); ++i) {
       const Point& p = a.points[i];
       const Point& q = b.points[i];
-      if (p.position_m != q.position_m || p.time_s != q.time_s || p.intensity != q.intensity ||
-          p.ring != q.ring) {
+      if (p.position_m != q.position_m || p.time_s != q.time_s || p.intensity != q.intensity || p.ring != q.ring) {
         out << "point " << i << ": (" << p.position_m.transpose() << ") t=" << p.time_s << " vs ("
             << q.position_m.transpose() << ") t=" << q.time_s;
         break;

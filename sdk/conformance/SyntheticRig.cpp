@@ -89,8 +89,7 @@ RawScan SyntheticRig::Scan(std::size_t point_count, std::uint32_t seed) {
     const double az = azimuth_rad(rng);
     const double el = elevation_rad(rng);
     Point p;
-    p.position_m = r * Eigen::Vector3d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
-                                       std::sin(el));
+    p.position_m = r * Eigen::Vector3d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
     p.time_s = t;
     p.intensity = 1.0f;
     scan.points.push_back(p);
@@ -98,9 +97,8 @@ RawScan SyntheticRig::Scan(std::size_t point_count, std::uint32_t seed) {
   return scan;
 }
 
-std::vector<Eigen::Vector3d> SyntheticRig::ExpectedBodyPoints(const PayloadPlugin& plugin,
-                                                               const RawScan& scan,
-                                                               const EncoderTrack& encoder) {
+std::vector<Eigen::Vector3d> SyntheticRig::ExpectedBodyPoints(const PayloadPlugin& plugin, const RawScan& scan,
+                                                              const EncoderTrack& encoder) {
   const Eigen::Isometry3d T_body_world_end = WorldFromBody(scan.end_time_s).inverse();
   std::vector<Eigen::Vector3d> expected;
   expected.reserve(scan.points.size());

@@ -24,12 +24,12 @@ class SyntheticRig {
   // How raw encoder angles are wrapped before the plugin sees them.
   enum class Wrap { kZeroToTwoPi, kMinusPiToPi };
 
-  static constexpr double kMotorRateRadS = 3.3;     // encoder angle rate (rad/s)
-  static constexpr double kEncoderPhaseRad = 0.4;   // encoder angle at t = 0 (rad)
-  static constexpr double kEncoderStartS = 0.0;     // first encoder sample (s)
-  static constexpr double kEncoderEndS = 2.0;       // last encoder sample (s)
-  static constexpr double kScanStartS = 0.9;        // synthetic scan window start (s)
-  static constexpr double kScanEndS = 1.0;          // synthetic scan window end (s)
+  static constexpr double kMotorRateRadS = 3.3;    // encoder angle rate (rad/s)
+  static constexpr double kEncoderPhaseRad = 0.4;  // encoder angle at t = 0 (rad)
+  static constexpr double kEncoderStartS = 0.0;    // first encoder sample (s)
+  static constexpr double kEncoderEndS = 2.0;      // last encoder sample (s)
+  static constexpr double kScanStartS = 0.9;       // synthetic scan window start (s)
+  static constexpr double kScanEndS = 1.0;         // synthetic scan window end (s)
 
   // Unwrapped analytic encoder angle (rad) at time_s.
   static double EncoderAngle(double time_s);
@@ -56,9 +56,8 @@ class SyntheticRig {
   // The analytic deskew of every point of scan, using the plugin's own mount:
   //   p_world = T_world_body(t_i) * T_body_lidar(t_i) * p_lidar,
   //   p_body  = T_world_body(t_end)^-1 * p_world.
-  static std::vector<Eigen::Vector3d> ExpectedBodyPoints(const PayloadPlugin& plugin,
-                                                          const RawScan& scan,
-                                                          const EncoderTrack& encoder);
+  static std::vector<Eigen::Vector3d> ExpectedBodyPoints(const PayloadPlugin& plugin, const RawScan& scan,
+                                                         const EncoderTrack& encoder);
 };
 
 }  // namespace unimap::conformance

@@ -22,19 +22,38 @@ int ReadCount(const ParameterMap& map, const char* key) {
 }  // namespace
 
 void CoreParameters::AddTo(ParameterSet* set) const {
-  set->Add({kN, "N", "scans accumulated into one 3D scan (count)",
-            std::int64_t{scans_per_3d_scan}, 1, 100000, {}});
-  set->Add({kM, "M", "3D scans inserted into the matching submap before the growing one takes over (count)",
-            std::int64_t{scans_3d_per_submap}, 1, 100000, {}});
-  set->Add({kI, "I", "3D scans between pose-graph optimisations (count)",
-            std::int64_t{scans_3d_per_optimization}, 1, 100000, {}});
-  set->Add({kSigmaA, "sigma_a", "accelerometer white noise, standard deviation per sample (m/s^2)",
-            sigma_accel_m_s2, 1e-6, 10.0, {}});
-  set->Add({kSigmaG, "sigma_g", "gyroscope white noise, standard deviation per sample (rad/s)",
-            sigma_gyro_rad_s, 1e-7, 1.0, {}});
+  set->Add({kN, "N", "scans accumulated into one 3D scan (count)", std::int64_t{scans_per_3d_scan}, 1, 100000, {}});
+  set->Add({kM,
+            "M",
+            "3D scans inserted into the matching submap before the growing one takes over (count)",
+            std::int64_t{scans_3d_per_submap},
+            1,
+            100000,
+            {}});
+  set->Add({kI,
+            "I",
+            "3D scans between pose-graph optimisations (count)",
+            std::int64_t{scans_3d_per_optimization},
+            1,
+            100000,
+            {}});
+  set->Add({kSigmaA,
+            "sigma_a",
+            "accelerometer white noise, standard deviation per sample (m/s^2)",
+            sigma_accel_m_s2,
+            1e-6,
+            10.0,
+            {}});
+  set->Add({kSigmaG,
+            "sigma_g",
+            "gyroscope white noise, standard deviation per sample (rad/s)",
+            sigma_gyro_rad_s,
+            1e-7,
+            1.0,
+            {}});
   set->Add({kResolution, "", "distance-map voxel edge (m)", distance_map_resolution_m, 0.01, 2.0, {}});
-  set->Add({kMaxRange, "", "distance-map box half-size around the sensor (m)",
-            distance_map_max_range_m, 1.0, 500.0, {}});
+  set->Add(
+      {kMaxRange, "", "distance-map box half-size around the sensor (m)", distance_map_max_range_m, 1.0, 500.0, {}});
 }
 
 CoreParameters CoreParameters::FromMap(const ParameterMap& map) {
@@ -67,8 +86,7 @@ bool CoreParameters::IsValid(std::string* why) const {
     *why = "sigma_accel_m_s2 and sigma_gyro_rad_s must be positive";
     return false;
   }
-  if (!(distance_map_resolution_m > 0.0) ||
-      !(distance_map_resolution_m * 4.0 <= distance_map_max_range_m)) {
+  if (!(distance_map_resolution_m > 0.0) || !(distance_map_resolution_m * 4.0 <= distance_map_max_range_m)) {
     *why = "distance_map_resolution_m must be positive and at most a quarter of distance_map_max_range_m";
     return false;
   }

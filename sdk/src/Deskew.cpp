@@ -20,8 +20,8 @@ void ValidateRawScan(const RawScan& scan) {
   if (scan.end_time_s < scan.start_time_s) {
     std::ostringstream out;
     out.precision(17);
-    out << "time going backwards: scan ends at " << scan.end_time_s << " s before it starts at "
-        << scan.start_time_s << " s";
+    out << "time going backwards: scan ends at " << scan.end_time_s << " s before it starts at " << scan.start_time_s
+        << " s";
     throw InputError(out.str());
   }
   for (std::size_t i = 0; i < scan.points.size(); ++i) {
@@ -31,15 +31,15 @@ void ValidateRawScan(const RawScan& scan) {
     if (scan.has_point_time && (p.time_s < scan.start_time_s || p.time_s > scan.end_time_s)) {
       std::ostringstream out;
       out.precision(17);
-      out << PointLabel(i) << "time " << p.time_s << " s outside the scan window ["
-          << scan.start_time_s << ", " << scan.end_time_s << "] s";
+      out << PointLabel(i) << "time " << p.time_s << " s outside the scan window [" << scan.start_time_s << ", "
+          << scan.end_time_s << "] s";
       throw InputError(out.str());
     }
   }
 }
 
-BodyScan DeskewScan(const RawScan& scan, const MountQuery& T_body_lidar_at,
-                    const MotionQuery& T_world_body_at, const RangeLimits& limits) {
+BodyScan DeskewScan(const RawScan& scan, const MountQuery& T_body_lidar_at, const MotionQuery& T_world_body_at,
+                    const RangeLimits& limits) {
   ValidateRawScan(scan);
   BodyScan out;
   out.reference_time_s = scan.end_time_s;

@@ -26,8 +26,7 @@ std::string Describe(double time_s) {
 
 }  // namespace
 
-EncoderTrack::EncoderTrack(const std::vector<EncoderSample>& samples, double max_gap_s)
-    : max_gap_s_(max_gap_s) {
+EncoderTrack::EncoderTrack(const std::vector<EncoderSample>& samples, double max_gap_s) : max_gap_s_(max_gap_s) {
   if (!(max_gap_s > 0.0)) throw InputError("encoder: max_gap_s must be positive");
   times_s_.reserve(samples.size());
   unwrapped_rad_.reserve(samples.size());
@@ -51,8 +50,8 @@ void EncoderTrack::Append(const EncoderSample& sample) {
     return;
   }
   if (!(sample.time_s > times_s_.back())) {
-    throw InputError("time going backwards (" + Describe(sample.time_s) + " s after " +
-                     Describe(times_s_.back()) + " s)");
+    throw InputError("time going backwards (" + Describe(sample.time_s) + " s after " + Describe(times_s_.back()) +
+                     " s)");
   }
   // Unwrap: the true rotation between consecutive samples is less than pi.
   const double step = WrapDelta(sample.angle_rad - last_raw_rad_);
@@ -86,8 +85,8 @@ double EncoderTrack::AngleAt(double time_s) const {
     throw InputError("no encoder samples cover time " + Describe(time_s) + " s");
   }
   if (!(time_s >= times_s_.front()) || !(time_s <= times_s_.back())) {
-    throw InputError("time " + Describe(time_s) + " s is outside encoder coverage [" +
-                     Describe(times_s_.front()) + ", " + Describe(times_s_.back()) + "] s");
+    throw InputError("time " + Describe(time_s) + " s is outside encoder coverage [" + Describe(times_s_.front()) +
+                     ", " + Describe(times_s_.back()) + "] s");
   }
   const auto it = std::lower_bound(times_s_.begin(), times_s_.end(), time_s);
   const std::size_t i1 = static_cast<std::size_t>(std::distance(times_s_.begin(), it));

@@ -6,8 +6,7 @@
 namespace unimap {
 namespace {
 
-std::string FormatConfigError(const std::string& file, int line, const std::string& key,
-                              const std::string& reason) {
+std::string FormatConfigError(const std::string& file, int line, const std::string& key, const std::string& reason) {
   std::ostringstream out;
   if (!file.empty()) {
     out << file;
@@ -47,8 +46,7 @@ ConfigError::~ConfigError() = default;
 PluginError::PluginError(const std::string& what) : Error(what) {}
 PluginError::~PluginError() = default;
 
-PluginNotFoundError::PluginNotFoundError(const std::string& name,
-                                         std::vector<std::filesystem::path> searched)
+PluginNotFoundError::PluginNotFoundError(const std::string& name, std::vector<std::filesystem::path> searched)
     : PluginError(FormatNotFound(name, searched)), searched_(std::move(searched)) {}
 PluginNotFoundError::~PluginNotFoundError() = default;
 
@@ -58,8 +56,7 @@ PluginLoadError::~PluginLoadError() = default;
 NotAPluginError::NotAPluginError(const std::string& what) : PluginError(what) {}
 NotAPluginError::~NotAPluginError() = default;
 
-AbiMismatchError::AbiMismatchError(const std::string& library, std::uint32_t found,
-                                   std::uint32_t expected)
+AbiMismatchError::AbiMismatchError(const std::string& library, std::uint32_t found, std::uint32_t expected)
     : PluginError(library + ": built against payload ABI version " + std::to_string(found) +
                   ", this unimap expects version " + std::to_string(expected) +
                   " (rebuild the plugin against this SDK)"),

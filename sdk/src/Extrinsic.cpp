@@ -21,11 +21,20 @@ Eigen::Isometry3d Extrinsic::ToIsometry() const {
 }
 
 void Extrinsic::AddTo(ParameterSet* set, const std::string& prefix, const std::string& what) const {
-  set->Add({prefix + ".translation_m", "", what + ": translation x, y, z (m)",
-            std::vector<double>{translation_m.x(), translation_m.y(), translation_m.z()}, -100.0,
-            100.0, {}});
-  set->Add({prefix + ".rpy_deg", "", what + ": roll, pitch, yaw, R = Rz*Ry*Rx (deg)",
-            std::vector<double>{rpy_deg.x(), rpy_deg.y(), rpy_deg.z()}, -360.0, 360.0, {}});
+  set->Add({prefix + ".translation_m",
+            "",
+            what + ": translation x, y, z (m)",
+            std::vector<double>{translation_m.x(), translation_m.y(), translation_m.z()},
+            -100.0,
+            100.0,
+            {}});
+  set->Add({prefix + ".rpy_deg",
+            "",
+            what + ": roll, pitch, yaw, R = Rz*Ry*Rx (deg)",
+            std::vector<double>{rpy_deg.x(), rpy_deg.y(), rpy_deg.z()},
+            -360.0,
+            360.0,
+            {}});
 }
 
 Extrinsic Extrinsic::FromMap(const ParameterMap& map, const std::string& prefix) {

@@ -14,13 +14,12 @@ LineScanConversion LineScanToRawScan(const LineScan& line) {
     throw InputError("line scan header has a non-finite field or a negative time increment");
   }
   if (!line.intensities.empty() && line.intensities.size() != line.ranges_m.size()) {
-    throw InputError("line scan has " + std::to_string(line.intensities.size()) +
-                     " intensities for " + std::to_string(line.ranges_m.size()) + " beams");
+    throw InputError("line scan has " + std::to_string(line.intensities.size()) + " intensities for " +
+                     std::to_string(line.ranges_m.size()) + " beams");
   }
   LineScanConversion out;
   out.scan.start_time_s = line.start_time_s;
-  out.scan.end_time_s =
-      line.start_time_s + line.time_increment_s * static_cast<double>(line.ranges_m.size() - 1);
+  out.scan.end_time_s = line.start_time_s + line.time_increment_s * static_cast<double>(line.ranges_m.size() - 1);
   out.scan.has_point_time = true;
   out.scan.points.reserve(line.ranges_m.size());
   for (std::size_t i = 0; i < line.ranges_m.size(); ++i) {

@@ -23,12 +23,27 @@ Eigen::Isometry3d MotorMount::BodyFromLidar(double motor_angle_rad) const {
 void MotorMount::AddTo(ParameterSet* set) const {
   body_motor.AddTo(set, "extrinsic.body_motor", "motor frame in the body frame (T_body_motor)");
   motor_lidar.AddTo(set, "extrinsic.motor_lidar", "LiDAR frame in the motor frame at angle 0 (T_motor_lidar)");
-  set->Add({"motor.axis", "", "motor rotation axis in the motor frame (unit vector, normalised)",
-            std::vector<double>{axis_motor.x(), axis_motor.y(), axis_motor.z()}, -1.0, 1.0, {}});
-  set->Add({"motor.encoder_offset_deg", "", "motor angle when the encoder reads 0 (deg)",
-            encoder_offset_deg, -360.0, 360.0, {}});
-  set->Add({"motor.encoder_direction", "", "+1: encoder counts about +axis, -1: about -axis",
-            std::int64_t{encoder_direction}, -1, 1, {}});
+  set->Add({"motor.axis",
+            "",
+            "motor rotation axis in the motor frame (unit vector, normalised)",
+            std::vector<double>{axis_motor.x(), axis_motor.y(), axis_motor.z()},
+            -1.0,
+            1.0,
+            {}});
+  set->Add({"motor.encoder_offset_deg",
+            "",
+            "motor angle when the encoder reads 0 (deg)",
+            encoder_offset_deg,
+            -360.0,
+            360.0,
+            {}});
+  set->Add({"motor.encoder_direction",
+            "",
+            "+1: encoder counts about +axis, -1: about -axis",
+            std::int64_t{encoder_direction},
+            -1,
+            1,
+            {}});
 }
 
 MotorMount MotorMount::FromMap(const ParameterMap& map) {

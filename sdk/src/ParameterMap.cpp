@@ -5,17 +5,13 @@
 namespace unimap {
 namespace {
 
-[[noreturn]] void ThrowType(const std::string& key, const std::string& expected,
-                            const ParameterValue& value) {
-  throw ConfigError("", 0, key,
-                    "expected " + expected + ", got " + TypeName(value) + " " + ToString(value));
+[[noreturn]] void ThrowType(const std::string& key, const std::string& expected, const ParameterValue& value) {
+  throw ConfigError("", 0, key, "expected " + expected + ", got " + TypeName(value) + " " + ToString(value));
 }
 
 }  // namespace
 
-void ParameterMap::Set(const std::string& key, ParameterValue value) {
-  values_[key] = std::move(value);
-}
+void ParameterMap::Set(const std::string& key, ParameterValue value) { values_[key] = std::move(value); }
 
 bool ParameterMap::Contains(const std::string& key) const { return values_.count(key) > 0; }
 
@@ -50,15 +46,13 @@ const std::string& ParameterMap::GetString(const std::string& key) const {
   ThrowType(key, "string", value);
 }
 
-std::vector<double> ParameterMap::GetVector(const std::string& key,
-                                            std::size_t expected_size) const {
+std::vector<double> ParameterMap::GetVector(const std::string& key, std::size_t expected_size) const {
   const ParameterValue& value = At(key);
   const auto* list = std::get_if<std::vector<double>>(&value);
   if (list == nullptr) ThrowType(key, "list of " + std::to_string(expected_size) + " numbers", value);
   if (list->size() != expected_size) {
     throw ConfigError("", 0, key,
-                      "expected " + std::to_string(expected_size) + " numbers, got " +
-                          std::to_string(list->size()));
+                      "expected " + std::to_string(expected_size) + " numbers, got " + std::to_string(list->size()));
   }
   return *list;
 }

@@ -110,8 +110,8 @@ bool ParameterSet::Coerce(const std::string& key, const ParameterValue& value, P
   const auto* list = std::get_if<std::vector<double>>(&value);
   if (list == nullptr) return type_error();
   if (list->size() != expected_list.size()) {
-    *why = "expected a list of " + std::to_string(expected_list.size()) + " numbers, got " +
-           std::to_string(list->size());
+    *why =
+        "expected a list of " + std::to_string(expected_list.size()) + " numbers, got " + std::to_string(list->size());
     return false;
   }
   for (const double element : *list) {

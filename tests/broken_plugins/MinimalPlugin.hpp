@@ -29,25 +29,48 @@ class MinimalPlugin : public unimap::PayloadPlugin {
   unimap::ParameterSet Defaults() const override {
     unimap::ParameterSet set;
     unimap::CoreParameters().AddTo(&set);
-    set.Add({"extrinsic.body_motor.translation_m", "", "motor origin in the body frame (m)",
-             std::vector<double>{0.0, 0.0, 0.1}, -10.0, 10.0, {}});
-    set.Add({"extrinsic.body_motor.rpy_deg", "", "motor orientation in the body frame (deg)",
-             std::vector<double>{0.0, 0.0, 0.0}, -360.0, 360.0, {}});
-    set.Add({"motor.direction", "", "motor spin direction (word)", std::string("ccw"),
-             -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+    set.Add({"extrinsic.body_motor.translation_m",
+             "",
+             "motor origin in the body frame (m)",
+             std::vector<double>{0.0, 0.0, 0.1},
+             -10.0,
+             10.0,
+             {}});
+    set.Add({"extrinsic.body_motor.rpy_deg",
+             "",
+             "motor orientation in the body frame (deg)",
+             std::vector<double>{0.0, 0.0, 0.0},
+             -360.0,
+             360.0,
+             {}});
+    set.Add({"motor.direction",
+             "",
+             "motor spin direction (word)",
+             std::string("ccw"),
+             -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(),
              {"cw", "ccw"}});
-    set.Add({"motor.enabled", "", "whether the motor turns (flag)", true,
-             -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), {}});
-    set.Add({"label", "", "free text naming the rig (word)", std::string("bench"),
-             -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), {}});
+    set.Add({"motor.enabled",
+             "",
+             "whether the motor turns (flag)",
+             true,
+             -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(),
+             {}});
+    set.Add({"label",
+             "",
+             "free text naming the rig (word)",
+             std::string("bench"),
+             -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(),
+             {}});
     return set;
   }
 
   // Checks one cross-key rule itself (with an empty file name and line, as a
   // plugin does), then the core rules through CoreParameters::FromMap.
   void Configure(const unimap::ParameterMap& parameters) override {
-    if (parameters.GetDouble("distance_map_resolution_m") * 4.0 >
-        parameters.GetDouble("distance_map_max_range_m")) {
+    if (parameters.GetDouble("distance_map_resolution_m") * 4.0 > parameters.GetDouble("distance_map_max_range_m")) {
       throw unimap::ConfigError("", 0, "distance_map_resolution_m",
                                 "must be at most a quarter of distance_map_max_range_m");
     }
@@ -59,25 +82,21 @@ class MinimalPlugin : public unimap::PayloadPlugin {
 
   bool UsesEncoder() const override { return false; }
 
-  double MotorAngleAt(const unimap::EncoderTrack& /*encoder*/, double /*time_s*/) const override {
-    return 0.0;
-  }
+  double MotorAngleAt(const unimap::EncoderTrack& /*encoder*/, double /*time_s*/) const override { return 0.0; }
 
-  Eigen::Isometry3d BodyFromLidarAt(const unimap::EncoderTrack& /*encoder*/,
-                                    double /*time_s*/) const override {
+  Eigen::Isometry3d BodyFromLidarAt(const unimap::EncoderTrack& /*encoder*/, double /*time_s*/) const override {
     return Eigen::Isometry3d::Identity();
   }
 
   unimap::BodyScan Deskew(const unimap::RawScan& scan, const unimap::EncoderTrack& /*encoder*/,
                           const unimap::MotionQuery& T_world_body_at) const override {
-    return unimap::DeskewScan(
-        scan, [](double) { return Eigen::Isometry3d::Identity(); }, T_world_body_at, {});
+    return unimap::DeskewScan(scan, [](double) { return Eigen::Isometry3d::Identity(); }, T_world_body_at, {});
   }
 
  private:
-  int configure_count_ = 0;     // successful Configure() calls
-  int scans_per_3d_scan_ = 0;   // N after the last Configure()
-  std::string direction_;       // motor.direction after the last Configure()
+  int configure_count_ = 0;    // successful Configure() calls
+  int scans_per_3d_scan_ = 0;  // N after the last Configure()
+  std::string direction_;      // motor.direction after the last Configure()
 };
 
 }  // namespace unimap_test

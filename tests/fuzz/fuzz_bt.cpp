@@ -13,8 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.max_range_m = 2.0;
   options.max_edt_cells = 200000;
   try {
-    auto map = unimap::map::DistanceMap::LoadBt(scratch.Write("map.bt", data, size), options,
-                                                Eigen::Vector3f::Zero());
+    auto map = unimap::map::DistanceMap::LoadBt(scratch.Write("map.bt", data, size), options, Eigen::Vector3f::Zero());
     map->WaitForUpdates();
   } catch (const unimap::Error&) {
   }

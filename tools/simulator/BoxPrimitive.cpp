@@ -8,19 +8,16 @@ namespace unimap::sim {
 
 BoxPrimitive::BoxPrimitive(const Eigen::Vector3d& center_m, const Eigen::Vector3d& size_m,
                            const Eigen::Matrix3d& R_world_box)
-    : center_(center_m), half_(0.5 * size_m), R_world_box_(R_world_box),
-      R_box_world_(R_world_box.transpose()) {
+    : center_(center_m), half_(0.5 * size_m), R_world_box_(R_world_box), R_box_world_(R_world_box.transpose()) {
   if (!center_m.allFinite() || !size_m.allFinite() || (size_m.array() <= 0.0).any()) {
     throw std::invalid_argument("BoxPrimitive: center and size must be finite, size > 0");
   }
-  if (!R_world_box.allFinite() ||
-      !(R_world_box.transpose() * R_world_box).isIdentity(1e-9)) {
+  if (!R_world_box.allFinite() || !(R_world_box.transpose() * R_world_box).isIdentity(1e-9)) {
     throw std::invalid_argument("BoxPrimitive: orientation must be a rotation matrix");
   }
 }
 
-std::optional<RayHit> BoxPrimitive::Intersect(const Ray& ray, double min_range_m,
-                                              double max_range_m) const {
+std::optional<RayHit> BoxPrimitive::Intersect(const Ray& ray, double min_range_m, double max_range_m) const {
   // Slab method in the box frame: the ray is inside slab i for t between
   // (-h_i - o_i) / d_i and (h_i - o_i) / d_i; inside the box on the
   // intersection of the three intervals [t_enter, t_exit].

@@ -31,10 +31,10 @@ class BoxPrimitive final : public Primitive {
   const Eigen::Matrix3d& rotation() const { return R_world_box_; }
 
  private:
-  Eigen::Vector3d center_;         // box center, world frame
-  Eigen::Vector3d half_;           // half edge lengths, box frame
-  Eigen::Matrix3d R_world_box_;    // box axes in the world
-  Eigen::Matrix3d R_box_world_;    // its transpose, cached
+  Eigen::Vector3d center_;       // box center, world frame
+  Eigen::Vector3d half_;         // half edge lengths, box frame
+  Eigen::Matrix3d R_world_box_;  // box axes in the world
+  Eigen::Matrix3d R_box_world_;  // its transpose, cached
 };
 
 }  // namespace unimap::sim

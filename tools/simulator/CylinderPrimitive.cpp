@@ -9,9 +9,9 @@ namespace {
 
 // Keeps the smallest candidate range t in (lo, hi] and its normal.
 struct Nearest {
-  double lo;                // exclusive lower range bound
-  double hi;                // inclusive upper range bound, shrinks to the best so far
-  bool found = false;       // whether any candidate was accepted
+  double lo;                                         // exclusive lower range bound
+  double hi;                                         // inclusive upper range bound, shrinks to the best so far
+  bool found = false;                                // whether any candidate was accepted
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // outward normal of the best candidate
 
   void Offer(double t, const Eigen::Vector3d& outward_normal) {
@@ -25,21 +25,19 @@ struct Nearest {
 
 }  // namespace
 
-CylinderPrimitive::CylinderPrimitive(const Eigen::Vector3d& base_m, const Eigen::Vector3d& axis,
-                                     double radius_m, double height_m)
+CylinderPrimitive::CylinderPrimitive(const Eigen::Vector3d& base_m, const Eigen::Vector3d& axis, double radius_m,
+                                     double height_m)
     : base_(base_m), axis_(Eigen::Vector3d::UnitZ()), radius_(radius_m), height_(height_m) {
   const double axis_norm = axis.norm();
-  if (!base_m.allFinite() || !axis.allFinite() || !(axis_norm > 0.0) ||
-      !std::isfinite(radius_m) || !std::isfinite(height_m) || !(radius_m > 0.0) ||
-      !(height_m > 0.0)) {
+  if (!base_m.allFinite() || !axis.allFinite() || !(axis_norm > 0.0) || !std::isfinite(radius_m) ||
+      !std::isfinite(height_m) || !(radius_m > 0.0) || !(height_m > 0.0)) {
     throw std::invalid_argument(
         "CylinderPrimitive: base and axis must be finite, axis non-zero, radius and height > 0");
   }
   axis_ = axis / axis_norm;
 }
 
-std::optional<RayHit> CylinderPrimitive::Intersect(const Ray& ray, double min_range_m,
-                                                   double max_range_m) const {
+std::optional<RayHit> CylinderPrimitive::Intersect(const Ray& ray, double min_range_m, double max_range_m) const {
   // Split origin and direction into parts along the axis (s) and across it (_r).
   const Eigen::Vector3d o = ray.origin - base_;
   const double o_s = o.dot(axis_);
@@ -93,8 +91,7 @@ double CylinderPrimitive::SurfaceDistance(const Eigen::Vector3d& p) const {
 
 Eigen::AlignedBox3d CylinderPrimitive::Bounds() const {
   // A disk of radius r with unit normal a spans r * sqrt(1 - a_j^2) along world axis j.
-  const Eigen::Vector3d extent =
-      radius_ * (Eigen::Vector3d::Ones() - axis_.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
+  const Eigen::Vector3d extent = radius_ * (Eigen::Vector3d::Ones() - axis_.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
   const Eigen::Vector3d top = base_ + height_ * axis_;
   return Eigen::AlignedBox3d(base_.cwiseMin(top) - extent, base_.cwiseMax(top) + extent);
 }

@@ -16,8 +16,7 @@ class CylinderPrimitive final : public Primitive {
   // base_m: center of the bottom cap (world); axis: direction from the bottom
   // to the top cap (normalised here; must be finite and non-zero); radius_m,
   // height_m: > 0 and finite. Throws std::invalid_argument otherwise.
-  CylinderPrimitive(const Eigen::Vector3d& base_m, const Eigen::Vector3d& axis,
-                    double radius_m, double height_m);
+  CylinderPrimitive(const Eigen::Vector3d& base_m, const Eigen::Vector3d& axis, double radius_m, double height_m);
 
   std::optional<RayHit> Intersect(const Ray& ray, double min_range_m, double max_range_m) const override;
   // Exact, with rho the distance from the axis line and s the height along it:

@@ -22,13 +22,9 @@ EncoderSimulator::EncoderSimulator(const EncoderConfig& config)
   }
 }
 
-double EncoderSimulator::SampleTime(std::size_t k) const {
-  return static_cast<double>(k) / config_.rate_hz;
-}
+double EncoderSimulator::SampleTime(std::size_t k) const { return static_cast<double>(k) / config_.rate_hz; }
 
-double EncoderSimulator::TrueAngle(double time_s) const {
-  return config_.initial_angle_rad + rate_rad_s_ * time_s;
-}
+double EncoderSimulator::TrueAngle(double time_s) const { return config_.initial_angle_rad + rate_rad_s_ * time_s; }
 
 EncoderSample EncoderSimulator::Measure(double time_s) const {
   return EncoderSample{time_s, Quantise(TrueAngle(time_s), config_.resolution_rad)};

@@ -7,10 +7,10 @@ namespace unimap::sim {
 
 // A motor turning at a constant rate, read by an absolute encoder.
 struct EncoderConfig {
-  double rate_hz = 100.0;         // encoder samples per second (> 0)
-  double resolution_rad = 0.0;    // quantisation step (0 = none; else 2 pi / counts)
-  double motor_rate_rpm = 30.0;   // the reading advances at 2 pi rpm / 60 rad/s (> 0)
-  double initial_angle_rad = 0.0; // reading at time 0
+  double rate_hz = 100.0;          // encoder samples per second (> 0)
+  double resolution_rad = 0.0;     // quantisation step (0 = none; else 2 pi / counts)
+  double motor_rate_rpm = 30.0;    // the reading advances at 2 pi rpm / 60 rad/s (> 0)
+  double initial_angle_rad = 0.0;  // reading at time 0
 };
 
 // The encoder of a constant-rate motor. The true (unwrapped) reading is

@@ -10,9 +10,9 @@ namespace unimap::sim {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kMinStepM = 1e-4;       // smallest march step (grazes shorter than this are missed)
-constexpr double kBisectionWidthM = 1e-9;  // final bracket width of a crossing
-constexpr int kMaxNewtonSteps = 64;      // bracketed Newton steps before falling back to bisection
+constexpr double kMinStepM = 1e-4;            // smallest march step (grazes shorter than this are missed)
+constexpr double kBisectionWidthM = 1e-9;     // final bracket width of a crossing
+constexpr int kMaxNewtonSteps = 64;           // bracketed Newton steps before falling back to bisection
 constexpr int kMaxProjectionIterations = 32;  // Gauss-Newton iterations in SurfaceDistance
 // Margin of the height slab in Intersect, so that rounding cannot clip away a
 // crossing at the slab's faces (a flat field has a slab of zero thickness).
@@ -54,18 +54,15 @@ Eigen::Vector3d FacingNormal(const Eigen::Vector2d& gradient, const Eigen::Vecto
 
 }  // namespace
 
-HeightfieldPrimitive::HeightfieldPrimitive(const Eigen::Vector3d& center_m,
-                                           const Eigen::Vector2d& size_m, double z0_m,
+HeightfieldPrimitive::HeightfieldPrimitive(const Eigen::Vector3d& center_m, const Eigen::Vector2d& size_m, double z0_m,
                                            std::vector<Wave> waves)
-    : center_xy_(center_m.head<2>()), half_(0.5 * size_m), base_z_(center_m.z() + z0_m),
-      waves_(std::move(waves)) {
-  if (!center_m.allFinite() || !size_m.allFinite() || (size_m.array() <= 0.0).any() ||
-      !std::isfinite(z0_m)) {
+    : center_xy_(center_m.head<2>()), half_(0.5 * size_m), base_z_(center_m.z() + z0_m), waves_(std::move(waves)) {
+  if (!center_m.allFinite() || !size_m.allFinite() || (size_m.array() <= 0.0).any() || !std::isfinite(z0_m)) {
     throw std::invalid_argument("HeightfieldPrimitive: center, size, z0 finite, size > 0");
   }
   for (const Wave& w : waves_) {
-    if (!std::isfinite(w.amplitude_m) || !std::isfinite(w.kx_rad_m) ||
-        !std::isfinite(w.ky_rad_m) || !std::isfinite(w.phi_rad) || !std::isfinite(w.psi_rad)) {
+    if (!std::isfinite(w.amplitude_m) || !std::isfinite(w.kx_rad_m) || !std::isfinite(w.ky_rad_m) ||
+        !std::isfinite(w.phi_rad) || !std::isfinite(w.psi_rad)) {
       throw std::invalid_argument("HeightfieldPrimitive: wave parameters must be finite");
     }
     amplitude_sum_ += std::abs(w.amplitude_m);
@@ -99,8 +96,7 @@ double HeightfieldPrimitive::HeightAndGradient(double x, double y, Eigen::Vector
   return h;
 }
 
-std::optional<RayHit> HeightfieldPrimitive::Intersect(const Ray& ray, double min_range_m,
-                                                      double max_range_m) const {
+std::optional<RayHit> HeightfieldPrimitive::Intersect(const Ray& ray, double min_range_m, double max_range_m) const {
   const Eigen::Vector3d& o = ray.origin;
   const Eigen::Vector3d& d = ray.direction;
   // Restrict the ray to the bounding box (rectangle x [base - A, base + A],
@@ -109,17 +105,16 @@ std::optional<RayHit> HeightfieldPrimitive::Intersect(const Ray& ray, double min
   double t_hi = max_range_m;
   const Eigen::Vector2d lo = center_xy_ - half_;
   const Eigen::Vector2d hi = center_xy_ + half_;
-  if (!ClipSlab(o.x(), d.x(), lo.x(), hi.x(), &t_lo, &t_hi) ||
-      !ClipSlab(o.y(), d.y(), lo.y(), hi.y(), &t_lo, &t_hi) ||
-      !ClipSlab(o.z(), d.z(), base_z_ - amplitude_sum_ - kSlabMarginM,
-                base_z_ + amplitude_sum_ + kSlabMarginM, &t_lo, &t_hi)) {
+  if (!ClipSlab(o.x(), d.x(), lo.x(), hi.x(), &t_lo, &t_hi) || !ClipSlab(o.y(), d.y(), lo.y(), hi.y(), &t_lo, &t_hi) ||
+      !ClipSlab(o.z(), d.z(), base_z_ - amplitude_sum_ - kSlabMarginM, base_z_ + amplitude_sum_ + kSlabMarginM, &t_lo,
+                &t_hi)) {
     return std::nullopt;
   }
   const Eigen::Vector2d d_xy = d.head<2>();
   const double horizontal = d_xy.norm();
-  const double lipschitz = std::abs(d.z()) + slope_bound_ * horizontal;           // >= |f'|
-  const double curvature = curvature_bound_ * horizontal * horizontal;            // >= |f''|
-  if (lipschitz == 0.0) return std::nullopt;  // horizontal ray over flat ground: no crossing
+  const double lipschitz = std::abs(d.z()) + slope_bound_ * horizontal;  // >= |f'|
+  const double curvature = curvature_bound_ * horizontal * horizontal;   // >= |f''|
+  if (lipschitz == 0.0) return std::nullopt;                             // horizontal ray over flat ground: no crossing
   // f(t) = z(t) - h(x(t), y(t)) and its slope f'(t) = d_z - grad h . d_xy.
   const auto evaluate = [&](double t, double* slope) {
     Eigen::Vector2d gradient;

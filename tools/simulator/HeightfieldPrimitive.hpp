@@ -70,13 +70,13 @@ class HeightfieldPrimitive final : public Primitive {
   // h and its gradient at (x, y).
   double HeightAndGradient(double x, double y, Eigen::Vector2d* gradient) const;
 
-  Eigen::Vector2d center_xy_;    // rectangle center (m)
-  Eigen::Vector2d half_;         // rectangle half sizes (m)
-  double base_z_;                // mean height: center.z + z0 (m)
-  std::vector<Wave> waves_;      // the sum's terms
-  double amplitude_sum_ = 0.0;   // sum_k |a_k|: h stays within base +- this
-  double slope_bound_ = 0.0;     // G
-  double curvature_bound_ = 0.0; // K
+  Eigen::Vector2d center_xy_;     // rectangle center (m)
+  Eigen::Vector2d half_;          // rectangle half sizes (m)
+  double base_z_;                 // mean height: center.z + z0 (m)
+  std::vector<Wave> waves_;       // the sum's terms
+  double amplitude_sum_ = 0.0;    // sum_k |a_k|: h stays within base +- this
+  double slope_bound_ = 0.0;      // G
+  double curvature_bound_ = 0.0;  // K
 };
 
 }  // namespace unimap::sim

@@ -6,17 +6,14 @@
 namespace unimap::sim {
 
 ImuSimulator::ImuSimulator(const ImuConfig& config, std::uint64_t seed)
-    : config_(config),
-      rng_(seed),
-      accel_bias_(config.noise.accel_bias_m_s2),
-      gyro_bias_(config.noise.gyro_bias_rad_s) {
+    : config_(config), rng_(seed), accel_bias_(config.noise.accel_bias_m_s2), gyro_bias_(config.noise.gyro_bias_rad_s) {
   const ImuNoise& n = config_.noise;
   if (!(std::isfinite(config_.rate_hz) && config_.rate_hz > 0.0)) {
     throw std::invalid_argument("IMU rate must be positive");
   }
   if (!std::isfinite(config_.gravity_m_s2)) throw std::invalid_argument("gravity must be finite");
-  for (double sigma : {n.accel_noise_m_s2, n.gyro_noise_rad_s, n.accel_bias_walk_m_s2_sqrt_s,
-                       n.gyro_bias_walk_rad_s_sqrt_s}) {
+  for (double sigma :
+       {n.accel_noise_m_s2, n.gyro_noise_rad_s, n.accel_bias_walk_m_s2_sqrt_s, n.gyro_bias_walk_rad_s_sqrt_s}) {
     if (!(std::isfinite(sigma) && sigma >= 0.0)) throw std::invalid_argument("IMU sigmas must be >= 0");
   }
   if (!accel_bias_.allFinite() || !gyro_bias_.allFinite()) {

@@ -11,10 +11,10 @@ namespace unimap::sim {
 
 // IMU error model (per axis, the same for x, y, z).
 struct ImuNoise {
-  double accel_noise_m_s2 = 0.0;             // white noise sigma per sample
-  double gyro_noise_rad_s = 0.0;             // white noise sigma per sample
-  double accel_bias_walk_m_s2_sqrt_s = 0.0;  // bias random walk: sigma of the change over 1 s
-  double gyro_bias_walk_rad_s_sqrt_s = 0.0;  // bias random walk: sigma of the change over 1 s
+  double accel_noise_m_s2 = 0.0;                              // white noise sigma per sample
+  double gyro_noise_rad_s = 0.0;                              // white noise sigma per sample
+  double accel_bias_walk_m_s2_sqrt_s = 0.0;                   // bias random walk: sigma of the change over 1 s
+  double gyro_bias_walk_rad_s_sqrt_s = 0.0;                   // bias random walk: sigma of the change over 1 s
   Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d::Zero();  // bias at the first sample
   Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();  // bias at the first sample
 };

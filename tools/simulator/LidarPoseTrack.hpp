@@ -34,10 +34,10 @@ class LidarPoseTrack {
   MotionQuery T_world_body_at_;
   MountQuery T_body_lidar_at_;
   double knot_interval_s_;
-  double start_s_ = 0.0;                 // time of knot 0
-  double step_s_ = 0.0;                  // time between knots (0: single knot)
-  std::vector<Eigen::Quaterniond> q_;    // q_world_lidar per knot, consecutive ones in one hemisphere
-  std::vector<Eigen::Vector3d> p_;       // p_world_lidar per knot
+  double start_s_ = 0.0;               // time of knot 0
+  double step_s_ = 0.0;                // time between knots (0: single knot)
+  std::vector<Eigen::Quaterniond> q_;  // q_world_lidar per knot, consecutive ones in one hemisphere
+  std::vector<Eigen::Vector3d> p_;     // p_world_lidar per knot
 };
 
 }  // namespace unimap::sim

@@ -46,8 +46,8 @@ class LidarSimulator {
   // One beam from origin along the unit direction dir_world (world frame):
   // the measured range, or NaN for no return; *intensity gets 100 |cos| of
   // the incidence angle (0 without a return).
-  double Fire(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir_world, double min_range_m,
-              double max_range_m, float* intensity);
+  double Fire(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir_world, double min_range_m, double max_range_m,
+              float* intensity);
   LidarPoseTrack& poses() { return poses_; }
 
  private:

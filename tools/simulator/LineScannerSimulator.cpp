@@ -20,9 +20,8 @@ LineScannerPattern LineScannerPattern::FromParameters(const ParameterMap& parame
   return p;
 }
 
-LineScannerSimulator::LineScannerSimulator(const World& world, LidarPoseTrack poses,
-                                           const LineScannerPattern& pattern, LidarNoise noise,
-                                           std::uint64_t seed)
+LineScannerSimulator::LineScannerSimulator(const World& world, LidarPoseTrack poses, const LineScannerPattern& pattern,
+                                           LidarNoise noise, std::uint64_t seed)
     : LidarSimulator(world, std::move(poses), noise, seed), pattern_(pattern) {
   if (!(pattern_.scan_rate_hz > 0.0 && std::isfinite(pattern_.scan_rate_hz))) {
     throw std::invalid_argument("line scanner rate must be positive");
@@ -48,9 +47,7 @@ LineScannerSimulator::LineScannerSimulator(const World& world, LidarPoseTrack po
 
 double LineScannerSimulator::scan_period_s() const { return 1.0 / pattern_.scan_rate_hz; }
 
-double LineScannerSimulator::scan_span_s() const {
-  return static_cast<double>(pattern_.beams - 1) * beam_interval_s_;
-}
+double LineScannerSimulator::scan_span_s() const { return static_cast<double>(pattern_.beams - 1) * beam_interval_s_; }
 
 io::ScanRecord LineScannerSimulator::Simulate(double start_time_s) {
   LineScan line;
@@ -68,8 +65,8 @@ io::ScanRecord LineScannerSimulator::Simulate(double start_time_s) {
   for (std::size_t i = 0; i < directions_lidar_.size(); ++i) {
     poses().At(start_time_s + static_cast<double>(i) * beam_interval_s_, &q_world_lidar, &p_world_lidar);
     const Eigen::Vector3d dir_world = q_world_lidar * directions_lidar_[i];
-    line.ranges_m[i] = static_cast<float>(
-        Fire(p_world_lidar, dir_world, pattern_.min_range_m, pattern_.max_range_m, &intensity));
+    line.ranges_m[i] =
+        static_cast<float>(Fire(p_world_lidar, dir_world, pattern_.min_range_m, pattern_.max_range_m, &intensity));
   }
   return line;
 }

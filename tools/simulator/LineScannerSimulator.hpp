@@ -29,8 +29,8 @@ struct LineScannerPattern {
 class LineScannerSimulator final : public LidarSimulator {
  public:
   // Throws std::invalid_argument for a pattern out of range.
-  LineScannerSimulator(const World& world, LidarPoseTrack poses, const LineScannerPattern& pattern,
-                       LidarNoise noise, std::uint64_t seed);
+  LineScannerSimulator(const World& world, LidarPoseTrack poses, const LineScannerPattern& pattern, LidarNoise noise,
+                       std::uint64_t seed);
 
   double scan_period_s() const override;
   double scan_span_s() const override;

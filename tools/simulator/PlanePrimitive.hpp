@@ -33,10 +33,10 @@ class PlanePrimitive final : public Primitive {
   Eigen::Vector3d normal() const { return R_world_plane_.col(2); }
 
  private:
-  Eigen::Vector3d center_;          // rectangle center, world frame
-  Eigen::Vector2d half_;            // half side lengths, plane frame
-  Eigen::Matrix3d R_world_plane_;   // plane axes in the world
-  Eigen::Matrix3d R_plane_world_;   // its transpose, cached
+  Eigen::Vector3d center_;         // rectangle center, world frame
+  Eigen::Vector2d half_;           // half side lengths, plane frame
+  Eigen::Matrix3d R_world_plane_;  // plane axes in the world
+  Eigen::Matrix3d R_plane_world_;  // its transpose, cached
 };
 
 }  // namespace unimap::sim

@@ -41,8 +41,9 @@ void ReadEncoder(const ScenarioFields& f, Scenario* s) {
   f.AllowOnly({"rate_hz", "counts_per_revolution"});
   s->encoder_rate_hz = f.Number("rate_hz", s->encoder_rate_hz, 1.0, 100000.0);
   const std::int64_t counts = f.Integer("counts_per_revolution", 0, 0, std::int64_t{1} << 40);
-  if (counts == 1) throw ConfigError(f.file(), f.LineOf("counts_per_revolution"), f.Name("counts_per_revolution"),
-                                     "must be 0 (not quantised) or at least 2");
+  if (counts == 1)
+    throw ConfigError(f.file(), f.LineOf("counts_per_revolution"), f.Name("counts_per_revolution"),
+                      "must be 0 (not quantised) or at least 2");
   s->encoder_resolution_rad = counts == 0 ? 0.0 : 2.0 * M_PI / static_cast<double>(counts);
 }
 
@@ -64,8 +65,8 @@ void ReadWobble(const ScenarioFields& f, Wobble* w) {
 }
 
 void ReadTrajectory(const ScenarioFields& f, Scenario* s) {
-  f.AllowOnly({"static_start_s", "max_speed_m_s", "max_acceleration_m_s2", "max_yaw_rate_deg_s", "wobble",
-               "waypoints"});
+  f.AllowOnly(
+      {"static_start_s", "max_speed_m_s", "max_acceleration_m_s2", "max_yaw_rate_deg_s", "wobble", "waypoints"});
   WaypointTrajectoryOptions& o = s->trajectory;
   o.static_start_s = f.Number("static_start_s", 3.0, 0.0, 1e6);
   o.max_speed_m_s = f.RequiredNumber("max_speed_m_s", 1e-3, 100.0);

@@ -18,9 +18,7 @@ ScenarioFields::ScenarioFields(const YAML::Node& node, std::string file, std::st
   if (!node_.IsMap()) throw ConfigError(file_, YamlLine(node_), prefix_, "must be a map of key: value");
 }
 
-std::string ScenarioFields::Name(const std::string& key) const {
-  return prefix_.empty() ? key : prefix_ + "." + key;
-}
+std::string ScenarioFields::Name(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
 int ScenarioFields::LineOf(const std::string& key) const {
   for (const auto& entry : node_) {
@@ -60,9 +58,9 @@ double ScenarioFields::Number(const std::string& key, double fallback, double mi
 double ScenarioFields::RequiredNumber(const std::string& key, double min, double max) const {
   const double value = ToNumber(Required(key), key);
   if (value < min || value > max) {
-    throw ConfigError(file_, LineOf(key), Name(key),
-                      "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
-                          std::to_string(value));
+    throw ConfigError(
+        file_, LineOf(key), Name(key),
+        "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " + std::to_string(value));
   }
   return value;
 }

@@ -3,8 +3,8 @@
 #include <initializer_list>
 #include <string>
 
-#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
+#include <Eigen/Core>
 
 namespace unimap::sim {
 

@@ -209,8 +209,7 @@ SimulationSummary Simulator::Run() {
   world_yaml << s.world;
   WriteAtomically(options_.out_dir / "world.yaml",
                   "# The world of scenario '" + s.name + "' (" + s.file +
-                      "): the primitives list WorldLoader reads (docs/simulation.md).\n" +
-                      world_yaml.c_str() + "\n");
+                      "): the primitives list WorldLoader reads (docs/simulation.md).\n" + world_yaml.c_str() + "\n");
 
   summary.scenario = s.name;
   summary.payload = plugin.Name();

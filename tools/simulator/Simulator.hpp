@@ -13,13 +13,13 @@ namespace unimap::sim {
 
 // How to run a scenario.
 struct SimulationOptions {
-  std::filesystem::path out_dir;          // dataset folder (created if needed)
-  std::optional<std::uint64_t> seed;      // replaces the scenario's seed
-  std::optional<std::string> payload;     // platform file or plugin name, replaces the scenario's
-  std::optional<double> duration_s;       // stop after this much data (<= the trajectory's duration)
+  std::filesystem::path out_dir;                  // dataset folder (created if needed)
+  std::optional<std::uint64_t> seed;              // replaces the scenario's seed
+  std::optional<std::string> payload;             // platform file or plugin name, replaces the scenario's
+  std::optional<double> duration_s;               // stop after this much data (<= the trajectory's duration)
   std::function<void(double fraction)> progress;  // called now and then with the fraction done
-  const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): end the data at the last scan
-                                            // written and finish the dataset
+  const std::atomic<bool>* stop = nullptr;        // when set (e.g. by a signal): end the data at the last scan
+                                                  // written and finish the dataset
 };
 
 // What a run produced.

@@ -12,8 +12,7 @@ SpherePrimitive::SpherePrimitive(const Eigen::Vector3d& center_m, double radius_
   }
 }
 
-std::optional<RayHit> SpherePrimitive::Intersect(const Ray& ray, double min_range_m,
-                                                 double max_range_m) const {
+std::optional<RayHit> SpherePrimitive::Intersect(const Ray& ray, double min_range_m, double max_range_m) const {
   // |o + t d|^2 = r^2 with |d| = 1: t^2 + 2 b t + c = 0, b = o.d, c = |o|^2 - r^2.
   // Roots from the closest-approach form t = -b -+ sqrt(r^2 - |o + (-b) d|^2),
   // which keeps its accuracy for distant spheres.
@@ -23,7 +22,7 @@ std::optional<RayHit> SpherePrimitive::Intersect(const Ray& ray, double min_rang
   const double h2 = radius_ * radius_ - miss2;
   if (h2 < 0.0) return std::nullopt;
   const double h = std::sqrt(h2);
-  double t = -b - h;  // the entry point
+  double t = -b - h;                   // the entry point
   if (!(t > min_range_m)) t = -b + h;  // from inside (or behind): the exit point
   if (!(t > min_range_m) || t > max_range_m) return std::nullopt;
   RayHit hit;

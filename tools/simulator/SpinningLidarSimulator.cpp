@@ -53,22 +53,19 @@ SpinningLidarSimulator::SpinningLidarSimulator(const World& world, LidarPoseTrac
     const double azimuth = sense * 2.0 * M_PI * static_cast<double>(j) / static_cast<double>(firings_);
     for (std::size_t k = 0; k < rings; ++k) {
       const double elevation_deg =
-          rings == 1 ? 0.5 * (p.vertical_fov_min_deg + p.vertical_fov_max_deg)
-                     : p.vertical_fov_min_deg + static_cast<double>(k) *
-                                                    (p.vertical_fov_max_deg - p.vertical_fov_min_deg) /
-                                                    static_cast<double>(rings - 1);
+          rings == 1
+              ? 0.5 * (p.vertical_fov_min_deg + p.vertical_fov_max_deg)
+              : p.vertical_fov_min_deg + static_cast<double>(k) * (p.vertical_fov_max_deg - p.vertical_fov_min_deg) /
+                                             static_cast<double>(rings - 1);
       const double el = elevation_deg * kDegToRad;
-      directions_lidar_.emplace_back(std::cos(el) * std::cos(azimuth), std::cos(el) * std::sin(azimuth),
-                                     std::sin(el));
+      directions_lidar_.emplace_back(std::cos(el) * std::cos(azimuth), std::cos(el) * std::sin(azimuth), std::sin(el));
     }
   }
 }
 
 double SpinningLidarSimulator::scan_period_s() const { return 1.0 / pattern_.spin_rate_hz; }
 
-double SpinningLidarSimulator::scan_span_s() const {
-  return static_cast<double>(firings_ - 1) * firing_interval_s_;
-}
+double SpinningLidarSimulator::scan_span_s() const { return static_cast<double>(firings_ - 1) * firing_interval_s_; }
 
 io::ScanRecord SpinningLidarSimulator::Simulate(double start_time_s) {
   RawScan scan;
@@ -87,8 +84,8 @@ io::ScanRecord SpinningLidarSimulator::Simulate(double start_time_s) {
     const Eigen::Matrix3d R_world_lidar = q_world_lidar.toRotationMatrix();
     for (std::size_t k = 0; k < rings; ++k) {
       const Eigen::Vector3d& d_lidar = directions_lidar_[j * rings + k];
-      const double range = Fire(p_world_lidar, R_world_lidar * d_lidar, pattern_.min_range_m,
-                                pattern_.max_range_m, &intensity);
+      const double range =
+          Fire(p_world_lidar, R_world_lidar * d_lidar, pattern_.min_range_m, pattern_.max_range_m, &intensity);
       if (std::isnan(range)) continue;
       Point point;
       point.position_m = range * d_lidar;

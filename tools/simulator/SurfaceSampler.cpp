@@ -66,7 +66,7 @@ class VoxelSet {
 
 // A hit and its voxel.
 struct KeyedPoint {
-  Eigen::Vector3d p;       // on a surface, world frame
+  Eigen::Vector3d p;      // on a surface, world frame
   std::uint64_t key = 0;  // its packed voxel index
 };
 

@@ -40,12 +40,11 @@ WaypointTrajectory::WaypointTrajectory(std::vector<Waypoint> waypoints, Waypoint
   const auto& w = o.wobble;
   Require(!waypoints_.empty(), "needs at least one waypoint");
   Require(std::isfinite(o.max_speed_m_s) && o.max_speed_m_s > 0.0, "max speed must be positive");
-  Require(std::isfinite(o.max_acceleration_m_s2) && o.max_acceleration_m_s2 > 0.0,
-          "max acceleration must be positive");
+  Require(std::isfinite(o.max_acceleration_m_s2) && o.max_acceleration_m_s2 > 0.0, "max acceleration must be positive");
   Require(std::isfinite(o.max_yaw_rate_rad_s) && o.max_yaw_rate_rad_s > 0.0, "max yaw rate must be positive");
   Require(std::isfinite(o.static_start_s) && o.static_start_s >= 0.0, "static start must be >= 0");
-  Require(std::isfinite(w.roll_amplitude_rad) && w.roll_amplitude_rad >= 0.0 &&
-              std::isfinite(w.pitch_amplitude_rad) && w.pitch_amplitude_rad >= 0.0,
+  Require(std::isfinite(w.roll_amplitude_rad) && w.roll_amplitude_rad >= 0.0 && std::isfinite(w.pitch_amplitude_rad) &&
+              w.pitch_amplitude_rad >= 0.0,
           "wobble amplitudes must be >= 0");
   Require(std::isfinite(w.roll_period_s) && w.roll_period_s > 0.0 && std::isfinite(w.pitch_period_s) &&
               w.pitch_period_s > 0.0 && std::isfinite(w.ramp_s) && w.ramp_s > 0.0,
@@ -137,8 +136,7 @@ KinematicState WaypointTrajectory::At(double time_s) const {
   //   omega_body = Rx^T Ry^T (0, 0, yaw') + Rx^T (0, pitch', 0) + (roll', 0, 0).
   const double sr = std::sin(roll), cr = std::cos(roll);
   const double sp = std::sin(pitch), cp = std::cos(pitch);
-  state.angular_velocity_body_rad_s = Eigen::Vector3d(roll_rate - yaw_rate * sp,
-                                                      pitch_rate * cr + yaw_rate * cp * sr,
+  state.angular_velocity_body_rad_s = Eigen::Vector3d(roll_rate - yaw_rate * sp, pitch_rate * cr + yaw_rate * cp * sr,
                                                       -pitch_rate * sr + yaw_rate * cp * cr);
   return state;
 }

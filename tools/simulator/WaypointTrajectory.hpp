@@ -10,8 +10,8 @@ namespace unimap::sim {
 // One stop of a waypoint trajectory.
 struct Waypoint {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // body origin in the world frame
-  double yaw_rad = 0.0;   // heading on arrival; interpolated as written (no wrapping), so 0 -> 6 rad turns 6 rad
-  double dwell_s = 0.0;   // time held at rest here after arriving (>= 0)
+  double yaw_rad = 0.0;  // heading on arrival; interpolated as written (no wrapping), so 0 -> 6 rad turns 6 rad
+  double dwell_s = 0.0;  // time held at rest here after arriving (>= 0)
 };
 
 // A small smooth roll/pitch oscillation that excites the IMU (a hovering
@@ -69,12 +69,12 @@ class WaypointTrajectory final : public Trajectory {
  private:
   // A stretch of time: a move between two waypoints or a hold at one.
   struct Phase {
-    double t0_s = 0.0;         // start time
-    double duration_s = 0.0;   // > 0
-    Eigen::Vector3d p0_m, p1_m;  // start and end position (equal for a hold)
+    double t0_s = 0.0;                      // start time
+    double duration_s = 0.0;                // > 0
+    Eigen::Vector3d p0_m, p1_m;             // start and end position (equal for a hold)
     double yaw0_rad = 0.0, yaw1_rad = 0.0;  // start and end yaw (equal for a hold)
-    double length_m = 0.0;     // |p1 - p0|
-    double path_before_m = 0.0;  // distance travelled before this phase
+    double length_m = 0.0;                  // |p1 - p0|
+    double path_before_m = 0.0;             // distance travelled before this phase
   };
   // Index of the phase containing time_s (already clamped).
   std::size_t PhaseAt(double time_s) const;
@@ -83,9 +83,9 @@ class WaypointTrajectory final : public Trajectory {
 
   std::vector<Waypoint> waypoints_;
   WaypointTrajectoryOptions options_;
-  std::vector<Phase> phases_;          // in time order, contiguous
-  std::vector<double> phase_starts_s_; // phases_[i].t0_s, for the search
-  std::vector<double> arrival_s_;      // per waypoint
+  std::vector<Phase> phases_;           // in time order, contiguous
+  std::vector<double> phase_starts_s_;  // phases_[i].t0_s, for the search
+  std::vector<double> arrival_s_;       // per waypoint
 };
 
 }  // namespace unimap::sim

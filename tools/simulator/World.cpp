@@ -34,8 +34,8 @@ constexpr double kBoundsPadM = 1e-7;
 
 // Entry range of the ray into a node's box, clipped to [t_min, t_max]; false
 // when the clipped interval is empty (slab test, Kay & Kajiya 1986).
-inline bool SlabEntry(const double* lo, const double* hi, const double* origin,
-                      const double* inv_direction, double t_min, double t_max, double* t_entry) {
+inline bool SlabEntry(const double* lo, const double* hi, const double* origin, const double* inv_direction,
+                      double t_min, double t_max, double* t_entry) {
   for (int i = 0; i < 3; ++i) {
     // Branch-free (min/max): the products are never NaN (see Cast).
     const double t0 = (lo[i] - origin[i]) * inv_direction[i];
@@ -86,12 +86,10 @@ void World::Build() {
   for (const auto& primitive : primitives_) {
     Eigen::AlignedBox3d box = primitive->Bounds();
     if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite()) {
-      throw std::invalid_argument("World::Build: a " + primitive->Kind() +
-                                  " primitive has empty or non-finite bounds");
+      throw std::invalid_argument("World::Build: a " + primitive->Kind() + " primitive has empty or non-finite bounds");
     }
     const Eigen::Vector3d pad =
-        Eigen::Vector3d::Constant(kBoundsPadM) +
-        1e-12 * box.min().cwiseAbs().cwiseMax(box.max().cwiseAbs());
+        Eigen::Vector3d::Constant(kBoundsPadM) + 1e-12 * box.min().cwiseAbs().cwiseMax(box.max().cwiseAbs());
     bounds.emplace_back(box.min() - pad, box.max() + pad);
   }
   nodes_.clear();
@@ -122,9 +120,7 @@ int World::BuildNode(int begin, int end, int depth, const std::vector<Eigen::Ali
   if (n == 1) return make_leaf();
 
   const auto by_centroid = [&bounds](int axis) {
-    return [&bounds, axis](int a, int b) {
-      return bounds[a].center()[axis] < bounds[b].center()[axis];
-    };
+    return [&bounds, axis](int a, int b) { return bounds[a].center()[axis] < bounds[b].center()[axis]; };
   };
   // Surface area heuristic (MacDonald & Booth 1990), sweeping every split of
   // the centroid-sorted range on each axis:
@@ -145,8 +141,7 @@ int World::BuildNode(int begin, int end, int depth, const std::vector<Eigen::Ali
       Eigen::AlignedBox3d left;
       for (int k = 1; k < n; ++k) {  // k primitives on the left
         left.extend(bounds[ordered_[begin + k - 1]]);
-        const double cost =
-            kTraversalCost + (SurfaceArea(left) * k + right_area[k] * (n - k)) / area;
+        const double cost = kTraversalCost + (SurfaceArea(left) * k + right_area[k] * (n - k)) / area;
         if (cost < best_cost) {
           best_cost = cost;
           best_axis = axis;
@@ -163,8 +158,8 @@ int World::BuildNode(int begin, int end, int depth, const std::vector<Eigen::Ali
     Eigen::Index axis = 0;
     centroids.sizes().maxCoeff(&axis);
     best_count_left = n / 2;
-    std::nth_element(ordered_.begin() + begin, ordered_.begin() + begin + best_count_left,
-                     ordered_.begin() + end, by_centroid(static_cast<int>(axis)));
+    std::nth_element(ordered_.begin() + begin, ordered_.begin() + begin + best_count_left, ordered_.begin() + end,
+                     by_centroid(static_cast<int>(axis)));
   }
   const int middle = begin + best_count_left;
   BuildNode(begin, middle, depth + 1, bounds);
@@ -217,10 +212,10 @@ std::optional<RayHit> World::Cast(const Ray& ray, double min_range_m, double max
     int far_child = node.right_or_first;
     double t_near = 0.0;
     double t_far = 0.0;
-    const bool hit_near = SlabEntry(nodes_[near_child].lo, nodes_[near_child].hi, origin,
-                                    inv_direction, min_range_m, best, &t_near);
-    const bool hit_far = SlabEntry(nodes_[far_child].lo, nodes_[far_child].hi, origin,
-                                   inv_direction, min_range_m, best, &t_far);
+    const bool hit_near =
+        SlabEntry(nodes_[near_child].lo, nodes_[near_child].hi, origin, inv_direction, min_range_m, best, &t_near);
+    const bool hit_far =
+        SlabEntry(nodes_[far_child].lo, nodes_[far_child].hi, origin, inv_direction, min_range_m, best, &t_far);
     if (hit_near && hit_far) {
       if (t_far < t_near) {
         std::swap(near_child, far_child);
@@ -241,8 +236,8 @@ double World::SurfaceDistance(const Eigen::Vector3d& p) const {
   if (!built_) throw std::logic_error("World::SurfaceDistance: call Build() after adding primitives");
   if (nodes_.empty()) return kInfinity;
   struct Entry {
-    int node;                 // node to visit
-    double box_distance_sq;   // squared distance from p to its box: a lower bound
+    int node;                // node to visit
+    double box_distance_sq;  // squared distance from p to its box: a lower bound
   };
   Entry stack[kStackSize];
   int top = 0;

@@ -54,10 +54,10 @@ class World {
   int BuildNode(int begin, int end, int depth, const std::vector<Eigen::AlignedBox3d>& bounds);
 
   std::vector<std::unique_ptr<Primitive>> primitives_;  // in insertion order
-  std::vector<Node> nodes_;        // BVH, root at 0, depth-first (left child = parent + 1)
-  std::vector<int> ordered_;       // primitive indices in leaf order
-  std::vector<const Primitive*> ordered_primitives_;  // primitives_[ordered_[i]], for traversal
-  bool built_ = true;              // an empty world needs no Build()
+  std::vector<Node> nodes_;                             // BVH, root at 0, depth-first (left child = parent + 1)
+  std::vector<int> ordered_;                            // primitive indices in leaf order
+  std::vector<const Primitive*> ordered_primitives_;    // primitives_[ordered_[i]], for traversal
+  bool built_ = true;                                   // an empty world needs no Build()
 };
 
 }  // namespace unimap::sim

@@ -68,8 +68,7 @@ class EntryReader {
  public:
   // Collects the keys of map; prefix ("" or "repeat.") is prepended to key names in errors.
   EntryReader(const YAML::Node& map, std::string file, std::string context, std::string prefix)
-      : file_(std::move(file)), context_(std::move(context)), prefix_(std::move(prefix)),
-        line_(LineOf(map)) {
+      : file_(std::move(file)), context_(std::move(context)), prefix_(std::move(prefix)), line_(LineOf(map)) {
     for (auto it = map.begin(); it != map.end(); ++it) {
       const YAML::Node key = it->first;
       if (!key.IsScalar()) Fail("", LineOf(key), "a key must be a plain word, got " + Describe(key));
@@ -83,8 +82,7 @@ class EntryReader {
   }
 
   [[noreturn]] void Fail(const std::string& key, int line, const std::string& reason) const {
-    throw ConfigError(file_, line > 0 ? line : line_, key.empty() ? prefix_ : prefix_ + key,
-                      context_ + reason);
+    throw ConfigError(file_, line > 0 ? line : line_, key.empty() ? prefix_ : prefix_ + key, context_ + reason);
   }
   bool Has(const std::string& key) const { return values_.count(key) > 0; }
   // Rejects keys outside allowed.
@@ -148,10 +146,10 @@ class EntryReader {
     return value;
   }
 
-  std::string file_;     // file label for errors
-  std::string context_;  // "world entry <i> (<type>): "
-  std::string prefix_;   // key prefix in errors
-  int line_;             // line of the map itself
+  std::string file_;                             // file label for errors
+  std::string context_;                          // "world entry <i> (<type>): "
+  std::string prefix_;                           // key prefix in errors
+  int line_;                                     // line of the map itself
   std::map<std::string, YAML::Node> values_;     // key -> value
   std::map<std::string, YAML::Node> key_nodes_;  // key -> key node (for its line)
 };
@@ -172,17 +170,13 @@ Factory ReadShape(const std::string& type, const EntryReader& entry) {
     const Eigen::Vector3d center = entry.Numbers("center", 3);
     const Eigen::Vector3d size = entry.Sizes("size", 3);
     const Eigen::Matrix3d R = RotationOf(entry);
-    return [=](const Eigen::Vector3d& offset) {
-      return std::make_unique<BoxPrimitive>(center + offset, size, R);
-    };
+    return [=](const Eigen::Vector3d& offset) { return std::make_unique<BoxPrimitive>(center + offset, size, R); };
   }
   if (type == "plane") {
     const Eigen::Vector3d center = entry.Numbers("center", 3);
     const Eigen::Vector2d size = entry.Sizes("size", 2);
     const Eigen::Matrix3d R = RotationOf(entry);
-    return [=](const Eigen::Vector3d& offset) {
-      return std::make_unique<PlanePrimitive>(center + offset, size, R);
-    };
+    return [=](const Eigen::Vector3d& offset) { return std::make_unique<PlanePrimitive>(center + offset, size, R); };
   }
   if (type == "cylinder") {
     const Eigen::Vector3d base = entry.Numbers("base", 3);
@@ -197,9 +191,7 @@ Factory ReadShape(const std::string& type, const EntryReader& entry) {
   if (type == "sphere") {
     const Eigen::Vector3d center = entry.Numbers("center", 3);
     const double radius = entry.Positive("radius");
-    return [=](const Eigen::Vector3d& offset) {
-      return std::make_unique<SpherePrimitive>(center + offset, radius);
-    };
+    return [=](const Eigen::Vector3d& offset) { return std::make_unique<SpherePrimitive>(center + offset, radius); };
   }
   // heightfield
   const Eigen::Vector3d center = entry.Numbers("center", 3);
@@ -259,8 +251,7 @@ void AddEntry(const YAML::Node& node, std::size_t item, const std::string& file,
     count = repeat.Integer("count");
     if (count < 1 || count > kMaxRepeatCount) {
       repeat.Fail("count", LineOf(repeat.Get("count")),
-                  "must be between 1 and " + std::to_string(kMaxRepeatCount) + ", got " +
-                      std::to_string(count));
+                  "must be between 1 and " + std::to_string(kMaxRepeatCount) + ", got " + std::to_string(count));
     }
     step = repeat.Numbers("step", 3);
   }
@@ -277,9 +268,9 @@ void AddEntry(const YAML::Node& node, std::size_t item, const std::string& file,
 
 World LoadWorld(const YAML::Node& primitives_list, const std::string& file_label) {
   if (!primitives_list.IsDefined() || !primitives_list.IsSequence()) {
-    throw ConfigError(file_label, LineOf(primitives_list), "world",
-                      "expected a list of primitives, got " +
-                          (primitives_list.IsDefined() ? Describe(primitives_list) : "nothing"));
+    throw ConfigError(
+        file_label, LineOf(primitives_list), "world",
+        "expected a list of primitives, got " + (primitives_list.IsDefined() ? Describe(primitives_list) : "nothing"));
   }
   World world;
   for (std::size_t i = 0; i < primitives_list.size(); ++i) {

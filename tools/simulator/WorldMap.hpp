@@ -20,11 +20,11 @@ struct WorldMapOptions {
 
 // What WriteWorldMap did.
 struct WorldMapSummary {
-  std::filesystem::path file;     // the PCD written
-  std::size_t viewpoints = 0;     // ray origins along the true trajectory
-  std::size_t points = 0;         // surface points written (one per voxel)
-  double max_range_m = 0.0;       // ray length used
-  double wall_s = 0.0;            // wall-clock seconds taken
+  std::filesystem::path file;  // the PCD written
+  std::size_t viewpoints = 0;  // ray origins along the true trajectory
+  std::size_t points = 0;      // surface points written (one per voxel)
+  double max_range_m = 0.0;    // ray length used
+  double wall_s = 0.0;         // wall-clock seconds taken
 };
 
 // The payload's ray length for the true map: its `lidar.max_range_m` when it

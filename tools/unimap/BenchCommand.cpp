@@ -5,14 +5,14 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -26,9 +26,9 @@
 #include "MapEvaluation.hpp"
 #include "MapOutputs.hpp"
 #include "RobustnessMatrix.hpp"
-#include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "Simulator.hpp"
+#include "TextFormat.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/PlyWriter.hpp"
@@ -44,11 +44,12 @@ namespace unimap::cli {
 namespace {
 
 struct BenchOptions {
-  std::string out = "docs/benchmarks.md";  // report to (re)write
-  std::string configs = "configs";         // folder with scenarios/ and platforms/
-  bool quick = false;                      // shortened runs, for a smoke test
+  std::string out = "docs/benchmarks.md";        // report to (re)write
+  std::string configs = "configs";               // folder with scenarios/ and platforms/
+  bool quick = false;                            // shortened runs, for a smoke test
   std::string kitti = "../shared/data/kitti00";  // KITTI-style folder for the real-data case (absent: skipped)
-  std::string kiss_icp = "build-peers/runner/build/kiss_icp_runner";  // peer (scripts/peer_kiss_icp.sh); absent: skipped
+  std::string kiss_icp =
+      "build-peers/runner/build/kiss_icp_runner";  // peer (scripts/peer_kiss_icp.sh); absent: skipped
 };
 
 // One measured figure of a benchmark.
@@ -59,8 +60,8 @@ struct BenchmarkFigure {
 
 // One benchmark: what it measures and how to run it.
 struct BenchmarkCase {
-  std::string name;         // section title, stable across runs
-  std::string description;  // one paragraph: what runs, on what data
+  std::string name;                                                      // section title, stable across runs
+  std::string description;                                               // one paragraph: what runs, on what data
   std::function<std::vector<BenchmarkFigure>(const BenchOptions&)> run;  // throws on failure
 };
 
@@ -94,17 +95,20 @@ std::vector<BenchmarkFigure> SimulateScenario(const BenchOptions& options, const
 // One figure per stage of pipeline::StageTimes: seconds and share of the
 // processing time (the map stages run on the map thread, on the same core).
 std::vector<BenchmarkFigure> StageFigures(const pipeline::StageTimes& t, double processing_s) {
-  const std::pair<const char*, double> stages[] = {
-      {"deskew", t.deskew_s},           {"downsampling", t.downsample_s},
-      {"particle filter + refinement", t.match_s}, {"ESKF", t.eskf_s},
-      {"map insertion (surfaces, occupancy, rays)", t.map_surface_s},
-      {"distance-field update", t.map_distance_s}, {"field export", t.map_export_s},
-      {"loop-closure search", t.loop_search_s}, {"pose-graph optimisation", t.optimization_s}};
+  const std::pair<const char*, double> stages[] = {{"deskew", t.deskew_s},
+                                                   {"downsampling", t.downsample_s},
+                                                   {"particle filter + refinement", t.match_s},
+                                                   {"ESKF", t.eskf_s},
+                                                   {"map insertion (surfaces, occupancy, rays)", t.map_surface_s},
+                                                   {"distance-field update", t.map_distance_s},
+                                                   {"field export", t.map_export_s},
+                                                   {"loop-closure search", t.loop_search_s},
+                                                   {"pose-graph optimisation", t.optimization_s}};
   std::vector<BenchmarkFigure> figures;
   for (const auto& [name, seconds] : stages) {
-    figures.push_back({std::string("stage: ") + name,
-                       Fixed(seconds, 2) + " s (" + Fixed(processing_s > 0.0 ? 100.0 * seconds / processing_s : 0.0, 1) +
-                           " %)"});
+    figures.push_back(
+        {std::string("stage: ") + name,
+         Fixed(seconds, 2) + " s (" + Fixed(processing_s > 0.0 ? 100.0 * seconds / processing_s : 0.0, 1) + " %)"});
   }
   return figures;
 }
@@ -158,27 +162,28 @@ std::vector<BenchmarkFigure> LocalizeScenario(const BenchOptions& options, const
   const pipeline::LocalizerStats& stats = mapper.localizer_stats();
   const auto& m = evaluation.metrics;
   const auto opt = [](const std::optional<double>& v, int digits) { return v ? Fixed(*v, digits) : "n/a"; };
-  std::vector<BenchmarkFigure> figures = {{"payload", s.payload + " (" + s.payload_source + ")"},
-          {"data duration", Fixed(summary.data_duration_s, 1) + " s, " + std::to_string(stats.scans) +
-                                " scans (" + std::to_string(stats.scans_matched) + " matched)"},
-          {"3D scans / submaps / loop closures", std::to_string(mapping.key_scans) + " / " +
-                                                    std::to_string(mapping.submaps) + " / " +
-                                                    std::to_string(mapping.loop_closures)},
-          {"processing time", Fixed(summary.processing_s, 2) + " s"},
-          {"real-time factor (data duration / processing time)", Fixed(summary.realtime_factor, 2)},
-          {"peak RSS (process, during the run)", Fixed(summary.peak_rss_mb, 0) + " MiB"},
-          {"ate_rmse_m / drift_percent", Fixed(m.ate_rmse_m, 3) + " / " + opt(m.drift_percent, 2)},
-          {"max_abs_error_m (x, y, z)", Fixed(m.max_abs_error_m.x(), 2) + ", " + Fixed(m.max_abs_error_m.y(), 2) +
-                                            ", " + Fixed(m.max_abs_error_m.z(), 2)},
-          {"mean_abs_rot_error_deg (roll, pitch, yaw)", Fixed(m.mean_abs_rot_error_deg.x(), 2) + ", " +
-                                                            Fixed(m.mean_abs_rot_error_deg.y(), 2) + ", " +
-                                                            Fixed(m.mean_abs_rot_error_deg.z(), 2)},
-          {"map error, aligned mean / p95 (m)", Fixed(map_error.mean_m, 3) + " / " + Fixed(map_error.p95_m, 3)},
-          {"first loop closure: height error odometry -> optimised (m)",
-           loop_point ? "at " + Fixed(loop_point->time_s, 1) + " s: " + Fixed(loop_point->odometry.height_error_m, 3) +
-                            " -> " + Fixed(loop_point->optimized.height_error_m, 3)
-                      : (mapping.first_loop_closure_time_s < 0.0 ? "none (no loop closure)"
-                                                                 : "n/a (no pose within 0.1 s of it)")}};
+  std::vector<BenchmarkFigure> figures = {
+      {"payload", s.payload + " (" + s.payload_source + ")"},
+      {"data duration", Fixed(summary.data_duration_s, 1) + " s, " + std::to_string(stats.scans) + " scans (" +
+                            std::to_string(stats.scans_matched) + " matched)"},
+      {"3D scans / submaps / loop closures", std::to_string(mapping.key_scans) + " / " +
+                                                 std::to_string(mapping.submaps) + " / " +
+                                                 std::to_string(mapping.loop_closures)},
+      {"processing time", Fixed(summary.processing_s, 2) + " s"},
+      {"real-time factor (data duration / processing time)", Fixed(summary.realtime_factor, 2)},
+      {"peak RSS (process, during the run)", Fixed(summary.peak_rss_mb, 0) + " MiB"},
+      {"ate_rmse_m / drift_percent", Fixed(m.ate_rmse_m, 3) + " / " + opt(m.drift_percent, 2)},
+      {"max_abs_error_m (x, y, z)", Fixed(m.max_abs_error_m.x(), 2) + ", " + Fixed(m.max_abs_error_m.y(), 2) + ", " +
+                                        Fixed(m.max_abs_error_m.z(), 2)},
+      {"mean_abs_rot_error_deg (roll, pitch, yaw)", Fixed(m.mean_abs_rot_error_deg.x(), 2) + ", " +
+                                                        Fixed(m.mean_abs_rot_error_deg.y(), 2) + ", " +
+                                                        Fixed(m.mean_abs_rot_error_deg.z(), 2)},
+      {"map error, aligned mean / p95 (m)", Fixed(map_error.mean_m, 3) + " / " + Fixed(map_error.p95_m, 3)},
+      {"first loop closure: height error odometry -> optimised (m)",
+       loop_point ? "at " + Fixed(loop_point->time_s, 1) + " s: " + Fixed(loop_point->odometry.height_error_m, 3) +
+                        " -> " + Fixed(loop_point->optimized.height_error_m, 3)
+                  : (mapping.first_loop_closure_time_s < 0.0 ? "none (no loop closure)"
+                                                             : "n/a (no pose within 0.1 s of it)")}};
   for (BenchmarkFigure& f : StageFigures(mapper.Times(), summary.processing_s)) figures.push_back(std::move(f));
   return figures;
 }
@@ -235,8 +240,9 @@ std::vector<BenchmarkFigure> RunKitti(const BenchOptions& options) {
   // This executable, even if its file was replaced since it started.
   const std::string self = "/proc/" + std::to_string(getpid()) + "/exe";
   int status = 0;
-  Capture("'" + self + "' convert --input '" + options.kitti + "' --format kitti --out '" + (work / "data").string() + "'",
-          &status);
+  Capture(
+      "'" + self + "' convert --input '" + options.kitti + "' --format kitti --out '" + (work / "data").string() + "'",
+      &status);
   if (status != 0) throw Error("unimap convert failed on " + options.kitti);
   const std::string platform = (fs::path(options.configs) / "platforms" / "kitti_hdl64.yaml").string();
   Capture("'" + self + "' run --quiet --threads 1 --platform '" + platform + "' --data '" + (work / "data").string() +
@@ -257,20 +263,20 @@ std::vector<BenchmarkFigure> RunKitti(const BenchOptions& options) {
     figures.push_back({"KISS-ICP", "not built (bash scripts/peer_kiss_icp.sh builds it)"});
     return figures;
   }
-  const std::string out = Capture("'" + options.kiss_icp + "' '" + options.kitti + "' '" + (work / "kiss.tum").string() + "'",
-                                  &status);
+  const std::string out =
+      Capture("'" + options.kiss_icp + "' '" + options.kitti + "' '" + (work / "kiss.tum").string() + "'", &status);
   const std::size_t line = out.find("kiss-icp:");
-  figures.push_back({"KISS-ICP C++ core (registration only, one thread)",
-                     status == 0 && line != std::string::npos ? out.substr(line, out.find('\n', line) - line)
-                                                               : "failed"});
+  figures.push_back(
+      {"KISS-ICP C++ core (registration only, one thread)",
+       status == 0 && line != std::string::npos ? out.substr(line, out.find('\n', line) - line) : "failed"});
   if (status == 0) {
     Capture("'" + self + "' evaluate --estimate '" + (work / "kiss.tum").string() + "' --truth '" +
                 (work / "data" / "groundtruth.tum").string() + "' --out '" + (work / "kiss").string() + "'",
             &status);
     const std::string kiss_metrics = ReadText(work / "kiss" / "metrics.json");
-    figures.push_back({"KISS-ICP: ate_rmse_m / trajectory_scale",
-                       Fixed(JsonNumber(kiss_metrics, "ate_rmse_m"), 4) + " / " +
-                           Fixed(JsonNumber(kiss_metrics, "trajectory_scale"), 3)});
+    figures.push_back(
+        {"KISS-ICP: ate_rmse_m / trajectory_scale", Fixed(JsonNumber(kiss_metrics, "ate_rmse_m"), 4) + " / " +
+                                                        Fixed(JsonNumber(kiss_metrics, "trajectory_scale"), 3)});
   }
   return figures;
 }
@@ -428,7 +434,8 @@ void AddBenchCommand(CLI::App* app) {
   cmd->add_option("--configs", options->configs, "Folder holding scenarios/ and platforms/ (default configs)")
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--quick", options->quick, "Short runs (60 s of simulated data) for a smoke test");
-  cmd->add_option("--kitti", options->kitti, "KITTI-style folder for the real-data case (default ../shared/data/kitti00)");
+  cmd->add_option("--kitti", options->kitti,
+                  "KITTI-style folder for the real-data case (default ../shared/data/kitti00)");
   cmd->add_option("--kiss-icp", options->kiss_icp, "KISS-ICP runner to compare with (scripts/peer_kiss_icp.sh)");
   auto matrix = std::make_shared<MatrixOptions>();
   auto run_matrix = std::make_shared<bool>(false);

@@ -17,10 +17,10 @@ namespace unimap::cli {
 namespace {
 
 struct ConvertOptions {
-  io::ConversionOptions conversion;   // input, output, payload and per-format options
-  std::string format;                 // kitti | carmen | rosbag
+  io::ConversionOptions conversion;      // input, output, payload and per-format options
+  std::string format;                    // kitti | carmen | rosbag
   std::string carmen_odometry = "auto";  // auto | odom | flaser
-  double carmen_fov_deg = 180.0;      // FLASER beams span
+  double carmen_fov_deg = 180.0;         // FLASER beams span
 };
 
 void PrintReport(const std::string& format, const io::ConversionReport& report, std::ostream& out) {
@@ -84,7 +84,8 @@ int RunConvert(ConvertOptions options) {
 void AddConvertCommand(CLI::App* app) {
   auto options = std::make_shared<ConvertOptions>();
   io::ConversionOptions& c = options->conversion;
-  CLI::App* cmd = app->add_subcommand("convert", "Convert KITTI, CARMEN or ROS 1 bag data into a unimap dataset folder");
+  CLI::App* cmd =
+      app->add_subcommand("convert", "Convert KITTI, CARMEN or ROS 1 bag data into a unimap dataset folder");
   cmd->add_option("--input", c.input, "KITTI sequence folder, CARMEN log (.clf, .clf.bz2) or ROS 1 bag")
       ->required()
       ->check(CLI::ExistingPath);
@@ -119,12 +120,15 @@ void AddConvertCommand(CLI::App* app) {
       ->check(CLI::PositiveNumber);
   // ROS 1 bags: "" = the one topic of the type, "none" = skip.
   io::RosbagTopics& topics = c.rosbag.topics;
-  cmd->add_option("--cloud-topic", topics.cloud, "rosbag: sensor_msgs/PointCloud2 topic (default: the only one; 'none')");
+  cmd->add_option("--cloud-topic", topics.cloud,
+                  "rosbag: sensor_msgs/PointCloud2 topic (default: the only one; 'none')");
   cmd->add_option("--laser-topic", topics.laser, "rosbag: sensor_msgs/LaserScan topic (default: the only one; 'none')");
   cmd->add_option("--imu-topic", topics.imu, "rosbag: sensor_msgs/Imu topic (default: the only one; 'none')");
   cmd->add_option("--joint-topic", topics.joint, "rosbag: sensor_msgs/JointState motor topic (default: the only one)");
-  cmd->add_option("--joint-name", c.rosbag.joint_name, "rosbag: joint whose position is the motor angle (default: first)");
-  cmd->add_option("--odometry-topic", topics.odometry, "rosbag: nav_msgs/Odometry topic (default: the only one; 'none')");
+  cmd->add_option("--joint-name", c.rosbag.joint_name,
+                  "rosbag: joint whose position is the motor angle (default: first)");
+  cmd->add_option("--odometry-topic", topics.odometry,
+                  "rosbag: nav_msgs/Odometry topic (default: the only one; 'none')");
   cmd->add_option("--groundtruth-topic", topics.groundtruth,
                   "rosbag: nav_msgs/Odometry or geometry_msgs/PoseStamped topic written as groundtruth.tum")
       ->capture_default_str();

@@ -11,11 +11,11 @@
 
 #include "Commands.hpp"
 #include "MappingRun.hpp"
-#include "Scenario.hpp"
-#include "Simulator.hpp"
 #include "NumberChecks.hpp"
 #include "OutputFolder.hpp"
+#include "Scenario.hpp"
 #include "SignalGuard.hpp"
+#include "Simulator.hpp"
 #include "TextFormat.hpp"
 #include "TextTable.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
@@ -48,8 +48,9 @@ fs::path FindConfigs(const std::string& given) {
   for (const fs::path& c : candidates) {
     if (fs::is_regular_file(c / "scenarios" / "tunnel.yaml")) return c;
   }
-  throw InputError("unimap demo: cannot find configs/scenarios/tunnel.yaml (run from the source folder or pass "
-                   "--configs)");
+  throw InputError(
+      "unimap demo: cannot find configs/scenarios/tunnel.yaml (run from the source folder or pass "
+      "--configs)");
 }
 
 // The evaluation beside the paper's Table (simulated tunnel, rotating Hokuyo).
@@ -85,8 +86,8 @@ int RunDemo(const DemoOptions& options) {
     PrepareOutputFolder(out, "--out");
     std::cout << "1/3 simulating the paper's tunnel (rotating Hokuyo) into " << data.string() << " ...\n";
     const sim::SimulationSummary s = sim::Simulator(scenario, simulation).Run();
-    std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, "
-              << s.scans << " scans, in " << Fixed(s.wall_s, 1) << " s\n";
+    std::cout << "    " << Fixed(s.duration_s, 0) << " s of data, " << Fixed(s.path_length_m, 1) << " m, " << s.scans
+              << " scans, in " << Fixed(s.wall_s, 1) << " s\n";
 
     if (s.interrupted) {
       std::cout << "interrupted: the dataset holds the first " << Fixed(s.duration_s, 1) << " s\n";
@@ -106,8 +107,8 @@ int RunDemo(const DemoOptions& options) {
     const eval::TrajectoryEvaluation evaluation = eval::EvaluateTrajectory(
         io::ReadTumTrajectory(out / "trajectory.tum"), io::ReadTumTrajectory(data / "groundtruth.tum"), {});
     PrintComparison(evaluation.metrics);
-    std::cout << "\nreport: " << (out / "report.html").string() << "\nmaps:   " << (out / "map.pcd").string()
-              << ", " << (out / "map.ply").string() << ", " << (out / "map.bt").string() << '\n';
+    std::cout << "\nreport: " << (out / "report.html").string() << "\nmaps:   " << (out / "map.pcd").string() << ", "
+              << (out / "map.ply").string() << ", " << (out / "map.bt").string() << '\n';
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -67,8 +67,7 @@ int RunEvaluate(const EvaluateOptions& options) {
     // Map accuracy: unaligned (the estimate's map frame taken as the world
     // frame) and after the trajectory's ATE alignment (estimate -> truth).
     std::optional<MapEvaluation> map_evaluation;
-    const std::optional<std::filesystem::path> world_file =
-        ResolveWorldFile(options.world_file, options.truth_file);
+    const std::optional<std::filesystem::path> world_file = ResolveWorldFile(options.world_file, options.truth_file);
     if (!options.map_file.empty() && world_file) {
       map_evaluation = EvaluateMapFile(options.map_file, *world_file, evaluation.errors.alignment.T_target_source,
                                        evaluation.errors.T_true_est_anchor);
@@ -78,9 +77,9 @@ int RunEvaluate(const EvaluateOptions& options) {
     } else if (!options.world_file.empty()) {
       std::cerr << "note: --world without --map: map error not computed\n";
     }
-    const std::filesystem::path out_dir =
-        options.out_dir.empty() ? std::filesystem::absolute(options.estimate_file).parent_path()
-                                : std::filesystem::path(options.out_dir);
+    const std::filesystem::path out_dir = options.out_dir.empty()
+                                              ? std::filesystem::absolute(options.estimate_file).parent_path()
+                                              : std::filesystem::path(options.out_dir);
 
     std::cout << "estimate: " << options.estimate_file << "  (" << estimate.size() << " poses)\n"
               << "truth:    " << options.truth_file << "  (" << truth.size() << " poses)\n";
@@ -96,8 +95,7 @@ int RunEvaluate(const EvaluateOptions& options) {
     const eval::ReportExtras map_extras = map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{};
     for (const eval::ExtraMetric& m : map_extras.metrics) table.AddRow({m.row.key, m.row.value, m.row.meaning});
     table.Print(std::cout);
-    const std::vector<std::filesystem::path> written =
-        eval::WriteEvaluationReport(evaluation, out_dir, map_extras);
+    const std::vector<std::filesystem::path> written = eval::WriteEvaluationReport(evaluation, out_dir, map_extras);
     report::ReportOptions report_options;
     report_options.folder = out_dir;
     report_options.estimate_file = options.estimate_file;
@@ -123,8 +121,7 @@ void AddEvaluateCommand(CLI::App* app) {
       "evaluate",
       "Compare an estimated trajectory with ground truth (and a map with the simulated world): metrics.json, "
       "PNG plots, report.html (interactive: unimap report)");
-  cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")
-      ->required();
+  cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")->required();
   cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM)")->required();
   cmd->add_option("--out", options->out_dir, "Output folder (default: the estimate's folder)");
   cmd->add_option("--map", options->map_file,
@@ -138,8 +135,7 @@ void AddEvaluateCommand(CLI::App* app) {
                   "Start anchoring: yaw = first position and heading (gravity-aligned estimates, default), "
                   "full = the whole first pose (estimates in an arbitrary frame)")
       ->check(CLI::IsMember({"yaw", "full"}));
-  cmd->add_option("--segment-m", options->segment_m, "Travelled distance per RPE segment")
-      ->capture_default_str();
+  cmd->add_option("--segment-m", options->segment_m, "Travelled distance per RPE segment")->capture_default_str();
   cmd->callback([options]() {
     const int code = RunEvaluate(*options);
     if (code != 0) throw CLI::RuntimeError(code);

@@ -10,8 +10,6 @@ using Json = nlohmann::ordered_json;
 
 // Two-space indented text: non-finite numbers are written as null, invalid
 // UTF-8 in strings (a path, a message) is replaced instead of throwing.
-inline std::string JsonText(const Json& json) {
-  return json.dump(2, ' ', false, Json::error_handler_t::replace);
-}
+inline std::string JsonText(const Json& json) { return json.dump(2, ' ', false, Json::error_handler_t::replace); }
 
 }  // namespace unimap::cli

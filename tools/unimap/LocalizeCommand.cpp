@@ -33,24 +33,24 @@ namespace unimap::cli {
 namespace {
 
 struct LocalizeCliOptions {
-  std::string map_file;         // prior map: .bt (OctoMap) or .pcd (points)
-  std::string platform_file;    // platform YAML
-  std::string data_dir;         // dataset folder
-  std::string out_dir;          // output folder
-  std::string initial_pose;     // "x y z qx qy qz qw" (T_map_body), empty: from the truth or identity
-  std::string initial_attitude; // "pose" or "gravity"; empty: pose for a ground-truth start, else gravity
+  std::string map_file;           // prior map: .bt (OctoMap) or .pcd (points)
+  std::string platform_file;      // platform YAML
+  std::string data_dir;           // dataset folder
+  std::string out_dir;            // output folder
+  std::string initial_pose;       // "x y z qx qy qz qw" (T_map_body), empty: from the truth or identity
+  std::string initial_attitude;   // "pose" or "gravity"; empty: pose for a ground-truth start, else gravity
   double map_resolution_m = 0.0;  // distance-map voxel (m); 0: ForPriorMap's (platform's, at most 0.1)
-  double max_duration_s = 0.0;  // 0: the whole dataset
-  bool point_to_plane = false;  // points measured against their nearest surface plane (GpfOptions)
-  int threads = 1;              // GPF threads
-  bool quiet = false;           // no progress line
-  bool force_payload = false;   // run a dataset recorded for another payload (else an error)
+  double max_duration_s = 0.0;    // 0: the whole dataset
+  bool point_to_plane = false;    // points measured against their nearest surface plane (GpfOptions)
+  int threads = 1;                // GPF threads
+  bool quiet = false;             // no progress line
+  bool force_payload = false;     // run a dataset recorded for another payload (else an error)
 };
 
 // The initial T_map_body and where it came from.
 struct InitialPose {
   Eigen::Isometry3d T_map_body = Eigen::Isometry3d::Identity();  // also the map box's first centre
-  std::string source;  // "option", "groundtruth" or "identity"
+  std::string source;                                            // "option", "groundtruth" or "identity"
   // False for "identity": the localiser's default start is used instead
   // (origin, yaw 0, roll and pitch from gravity alignment).
   bool given = true;
@@ -94,8 +94,8 @@ std::string PoseText(const Eigen::Isometry3d& T) {
   const Eigen::Quaterniond q(T.linear());
   std::ostringstream out;
   out.precision(6);
-  out << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z() << ' ' << q.x() << ' '
-      << q.y() << ' ' << q.z() << ' ' << q.w();
+  out << T.translation().x() << ' ' << T.translation().y() << ' ' << T.translation().z() << ' ' << q.x() << ' ' << q.y()
+      << ' ' << q.z() << ' ' << q.w();
   return out.str();
 }
 
@@ -129,9 +129,9 @@ std::unique_ptr<map::DistanceMap> LoadMap(const std::filesystem::path& file, con
     return map::DistanceMap::LoadBt(file, options, center_map);
   }
   std::vector<Eigen::Vector3f> points_map = LoadMapPoints(file);
-  points_map.erase(std::remove_if(points_map.begin(), points_map.end(),
-                                  [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
-                   points_map.end());
+  points_map.erase(
+      std::remove_if(points_map.begin(), points_map.end(), [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
+      points_map.end());
   if (points_map.empty()) throw InputError("map '" + file.string() + "': no finite points");
   *points = points_map.size();
   // A map that fits the cell budget gets one fixed distance box, computed
@@ -171,8 +171,8 @@ int RunLocalize(const LocalizeCliOptions& options) {
     CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);
     const InitialPose initial = ChooseInitialPose(options, reader);
     const std::string attitude = !options.initial_attitude.empty() ? options.initial_attitude
-                                 : initial.source == "groundtruth"    ? "pose"
-                                                                      : "gravity";
+                                 : initial.source == "groundtruth" ? "pose"
+                                                                   : "gravity";
     localizer_options.initial_attitude = attitude == "pose" ? pipeline::LocalizerOptions::InitialAttitude::kPose
                                                             : pipeline::LocalizerOptions::InitialAttitude::kGravity;
     std::cout << "initial pose (" << initial.source << "): " << PoseText(initial.T_map_body);
@@ -217,8 +217,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     // The attitude source used (a requested "pose" falls back to "gravity"
     // when the pose's tilt disagrees with gravity; see the messages).
     const std::optional<estimation::InitialAttitude> used = localizer.stats().initial_attitude;
-    extra["initial_attitude"] = 
-              std::string(used && *used == estimation::InitialAttitude::kPose ? "pose" : "gravity");
+    extra["initial_attitude"] = std::string(used && *used == estimation::InitialAttitude::kPose ? "pose" : "gravity");
     if (initial.given) extra["initial_attitude_requested"] = attitude;
     outputs.extras.emplace_back("localize", extra);
     return WriteRunOutputs(outputs);

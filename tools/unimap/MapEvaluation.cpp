@@ -37,19 +37,25 @@ std::vector<eval::ExtraMetric> Metrics(const MapEvaluation& e) {
   using S = eval::MapErrorStats;
   return {
       {u.mean_m,
-       {"map_error_mean_m", Fixed(u.mean_m, 4), "mean distance of the map points to the true surfaces (no alignment), m"}},
+       {"map_error_mean_m", Fixed(u.mean_m, 4),
+        "mean distance of the map points to the true surfaces (no alignment), m"}},
       {u.p95_m, {"map_error_p95_m", Fixed(u.p95_m, 4), "95th percentile (nearest rank) of that distance, m"}},
       {u.max_m, {"map_error_max_m", Fixed(u.max_m, 4), "largest distance of a map point, m"}},
       {u.points, {"map_points", std::to_string(u.points), "map points evaluated"}},
       {aligned(&S::mean_m),
-       {"map_error_aligned_mean_m", aligned_shown(&S::mean_m), "mean distance after moving the map by the ATE alignment, m"}},
-      {aligned(&S::p95_m), {"map_error_aligned_p95_m", aligned_shown(&S::p95_m), "95th percentile after the ATE alignment, m"}},
-      {aligned(&S::max_m), {"map_error_aligned_max_m", aligned_shown(&S::max_m), "largest distance after the ATE alignment, m"}},
+       {"map_error_aligned_mean_m", aligned_shown(&S::mean_m),
+        "mean distance after moving the map by the ATE alignment, m"}},
+      {aligned(&S::p95_m),
+       {"map_error_aligned_p95_m", aligned_shown(&S::p95_m), "95th percentile after the ATE alignment, m"}},
+      {aligned(&S::max_m),
+       {"map_error_aligned_max_m", aligned_shown(&S::max_m), "largest distance after the ATE alignment, m"}},
       {anchored(&S::mean_m),
        {"map_error_anchored_mean_m", anchored_shown(&S::mean_m),
         "mean distance after moving the map by the start anchor (first poses made to coincide), m"}},
-      {anchored(&S::p95_m), {"map_error_anchored_p95_m", anchored_shown(&S::p95_m), "95th percentile after the start anchor, m"}},
-      {anchored(&S::max_m), {"map_error_anchored_max_m", anchored_shown(&S::max_m), "largest distance after the start anchor, m"}},
+      {anchored(&S::p95_m),
+       {"map_error_anchored_p95_m", anchored_shown(&S::p95_m), "95th percentile after the start anchor, m"}},
+      {anchored(&S::max_m),
+       {"map_error_anchored_max_m", anchored_shown(&S::max_m), "largest distance after the start anchor, m"}},
   };
 }
 

@@ -10,8 +10,8 @@
 #include <Eigen/Geometry>
 
 #include "World.hpp"
-#include "eval/MapError.hpp"
 #include "eval/EvaluationReport.hpp"
+#include "eval/MapError.hpp"
 #include "eval/MetricRows.hpp"
 
 namespace unimap::cli {

@@ -20,8 +20,8 @@ namespace {
 
 // The pose of a trajectory nearest to time_s, or nullptr when none lies within max_dt_s.
 const StampedPose* Nearest(const std::vector<StampedPose>& poses, double time_s, double max_dt_s) {
-  auto it = std::lower_bound(poses.begin(), poses.end(), time_s,
-                             [](const StampedPose& p, double t) { return p.time_s < t; });
+  auto it =
+      std::lower_bound(poses.begin(), poses.end(), time_s, [](const StampedPose& p, double t) { return p.time_s < t; });
   const StampedPose* best = nullptr;
   if (it != poses.end()) best = &*it;
   if (it != poses.begin()) {
@@ -61,7 +61,7 @@ Json ErrorsJson(const PositionErrorAt& e) {
 }  // namespace
 
 Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
-                           const MapOutputOptions& options) {
+                     const MapOutputOptions& options) {
   const std::vector<StampedPose> trajectory = mapper.OptimizedTrajectory();
   io::WriteTumTrajectory(out_dir / "trajectory.tum", trajectory);
   io::WriteKittiTrajectory(out_dir / "trajectory_kitti.txt", trajectory);

@@ -13,7 +13,7 @@ namespace unimap::cli {
 
 // Settings of the written map.
 struct MapOutputOptions {
-  double map_voxel_m = 0.1;         // map.pcd / map.ply keep one point per voxel of this edge (m)
+  double map_voxel_m = 0.1;          // map.pcd / map.ply keep one point per voxel of this edge (m)
   double octree_resolution_m = 0.1;  // voxel edge of map.bt (m)
 };
 
@@ -23,7 +23,7 @@ struct MapOutputOptions {
 // mapper's counts and the file names as run.json's "mapping" object.
 // Throws unimap::Error when a file cannot be written.
 Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
-                           const MapOutputOptions& options);
+                     const MapOutputOptions& options);
 
 // Position error of one pose against the truth at the same time.
 struct PositionErrorAt {
@@ -35,9 +35,9 @@ struct PositionErrorAt {
 // point, before and after"), start-anchored on the first odometry pose's
 // position and heading (eval::AnchorTransform, as drift_percent).
 struct LoopPointErrors {
-  double time_s = 0.0;          // the first loop closure's 3D scan
-  PositionErrorAt odometry;     // the filter's estimate, before optimisation
-  PositionErrorAt optimized;    // the optimised trajectory
+  double time_s = 0.0;        // the first loop closure's 3D scan
+  PositionErrorAt odometry;   // the filter's estimate, before optimisation
+  PositionErrorAt optimized;  // the optimised trajectory
 };
 
 // LoopPointErrors at time_s of the odometry and optimised trajectories

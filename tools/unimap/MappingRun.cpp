@@ -10,10 +10,10 @@
 #include "MotionChoice.hpp"
 #include "OutputFolder.hpp"
 #include "RunOutputs.hpp"
+#include "estimation/MotionPriorOptions.hpp"
 #include "eval/LoopClosureCheck.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
-#include "estimation/MotionPriorOptions.hpp"
 #include "pipeline/Mapper.hpp"
 #include "pipeline/MapperSettings.hpp"
 #include "unimap/Errors.hpp"
@@ -47,8 +47,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     // The filter's own estimate streams to trajectory_odometry.tum; the
     // optimised trajectory and the map are written when the run ends.
     const pipeline::RunSummary summary =
-        RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet,
-                        options.trace);
+        RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet, options.trace);
     MapOutputOptions map_options;
     map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
     pipeline::StageTimes stages = mapper.Times();
@@ -90,12 +89,12 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       outputs.extras.emplace_back("loop_closure_check", o);
       if (check.false_closures > 0) {
         std::cout << "  note: " << check.false_closures << " of " << check.checked
-                  << " loop closures are false by the ground truth (off by more than "
-                  << check.false_translation_m << " m or " << check.false_rotation_deg << " deg)\n";
+                  << " loop closures are false by the ground truth (off by more than " << check.false_translation_m
+                  << " m or " << check.false_rotation_deg << " deg)\n";
       }
     }
-    std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, "
-              << stats.loop_closures << " loop closures, " << stats.optimizations << " optimisations\n";
+    std::cout << "mapping: " << stats.key_scans << " 3D scans, " << stats.submaps << " submaps, " << stats.loop_closures
+              << " loop closures, " << stats.optimizations << " optimisations\n";
     return WriteRunOutputs(outputs);
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';

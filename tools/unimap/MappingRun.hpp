@@ -7,23 +7,23 @@
 namespace unimap::cli {
 
 struct MappingRunOptions {
-  std::string platform_file;    // platform YAML
-  std::string data_dir;         // dataset folder
-  std::string out_dir;          // output folder
-  double max_duration_s = 0.0;  // 0: the whole dataset
-  int threads = 1;              // GPF threads
-  std::uint64_t seed = 1;       // GPF sampling seed (matching::GpfOptions::seed)
-  bool quiet = false;           // no progress line
-  bool no_loop_closure = false;  // map without loop-closure search
-  bool no_line_gap_fill = false;  // line scans: the distance map holds the measured stripes only
+  std::string platform_file;             // platform YAML
+  std::string data_dir;                  // dataset folder
+  std::string out_dir;                   // output folder
+  double max_duration_s = 0.0;           // 0: the whole dataset
+  int threads = 1;                       // GPF threads
+  std::uint64_t seed = 1;                // GPF sampling seed (matching::GpfOptions::seed)
+  bool quiet = false;                    // no progress line
+  bool no_loop_closure = false;          // map without loop-closure search
+  bool no_line_gap_fill = false;         // line scans: the distance map holds the measured stripes only
   bool measure_all_line_points = false;  // line scans: also measure points far from the map at the
                                          // prediction (LocalizerOptions::max_predicted_distance_m 0)
-  bool plane_matching = false;   // odometry matches points against neighbourhood planes only
-                                 // (LocalizerOptions::UsePlaneMatching)
-  bool trace = false;            // write trace.csv (ScanDiagnostics of every pose)
-  bool force_payload = false;    // run a dataset recorded for another payload (else an error)
-  std::string motion = "auto";   // prediction source: auto (what the dataset holds), imu, odometry
-                                 // (odometry.csv) or constant-velocity
+  bool plane_matching = false;           // odometry matches points against neighbourhood planes only
+                                         // (LocalizerOptions::UsePlaneMatching)
+  bool trace = false;                    // write trace.csv (ScanDiagnostics of every pose)
+  bool force_payload = false;            // run a dataset recorded for another payload (else an error)
+  std::string motion = "auto";           // prediction source: auto (what the dataset holds), imu, odometry
+                                         // (odometry.csv) or constant-velocity
 };
 
 // Runs the Mapper over the dataset and writes trajectory_odometry.tum

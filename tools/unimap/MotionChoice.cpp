@@ -43,8 +43,10 @@ MotionChoice ChooseMotion(const std::string& requested, io::DatasetReader& reade
                        std::string(odometry ? "odometry" : "constant-velocity") + " or leave --motion out");
     }
     if (choice.source == estimation::MotionSource::kWheelOdometry && !odometry) {
-      throw InputError("--motion odometry: the dataset has no wheel odometry (odometry.csv absent or empty); use "
-                       "--motion " + std::string(imu ? "imu" : "constant-velocity") + " or leave --motion out");
+      throw InputError(
+          "--motion odometry: the dataset has no wheel odometry (odometry.csv absent or empty); use "
+          "--motion " +
+          std::string(imu ? "imu" : "constant-velocity") + " or leave --motion out");
     }
     choice.reason = "--motion " + requested;
   }

@@ -12,7 +12,7 @@ Json PlatformParametersJson(const std::string& platform_file) {
     o["value"] = ToString(p.value);
     o["symbol"] = p.spec.symbol;
     o["source"] = p.source == ParameterSource::kPlatformFile ? platform.file + ":" + std::to_string(p.line)
-                                                               : std::string("plugin default");
+                                                             : std::string("plugin default");
     o["meaning"] = p.spec.description;
     parameters[p.spec.key] = o;
   }

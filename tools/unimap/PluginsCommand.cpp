@@ -34,8 +34,8 @@ int RunPlugins(const PluginsOptions& options) {
     try {
       const LoadedPlugin loaded = loader.Load(path.string());
       std::cout << '\n'
-                << loaded.plugin->Name() << "  (ABI " << loaded.abi_version << ")  "
-                << loaded.library_path.string() << "\n  " << loaded.plugin->Description() << '\n';
+                << loaded.plugin->Name() << "  (ABI " << loaded.abi_version << ")  " << loaded.library_path.string()
+                << "\n  " << loaded.plugin->Description() << '\n';
       if (!options.brief) {
         std::cout << "  defaults:\n";
         PrintDefaults(*loaded.plugin);
@@ -52,8 +52,8 @@ int RunPlugins(const PluginsOptions& options) {
 
 void AddPluginsCommand(CLI::App* app) {
   auto options = std::make_shared<PluginsOptions>();
-  CLI::App* cmd = app->add_subcommand(
-      "plugins", "List the payload plugins found (UNIMAP_PLUGIN_PATH, build and install folders)");
+  CLI::App* cmd =
+      app->add_subcommand("plugins", "List the payload plugins found (UNIMAP_PLUGIN_PATH, build and install folders)");
   cmd->add_flag("--brief", options->brief, "Names, versions and paths only, no defaults");
   cmd->callback([options]() {
     const int code = RunPlugins(*options);

@@ -39,9 +39,9 @@ constexpr double kDivergedAteM = 1.0;  // beyond: the case diverged
 const std::set<std::string> kLoopScenarios = {"corridor_loop", "narrow_hallway", "tunnel"};
 
 struct MatrixCase {
-  std::string scenario;       // file stem in configs/scenarios
-  std::string platform;       // file stem in configs/platforms
-  std::string variant;        // "nominal", "2x speed", "noisy IMU"
+  std::string scenario;  // file stem in configs/scenarios
+  std::string platform;  // file stem in configs/platforms
+  std::string variant;   // "nominal", "2x speed", "noisy IMU"
   double speed_scale = 1.0;
   double imu_noise_scale = 1.0;
   double imu_bias_scale = 1.0;
@@ -110,16 +110,26 @@ std::vector<std::string> StepArgs(const Job& job, const MatrixOptions& options) 
   const std::string platform = (configs / "platforms" / (job.c.platform + ".yaml")).string();
   const std::string duration = options.max_duration_s > 0.0 ? Fixed(options.max_duration_s, 3) : "";
   if (job.step == 0) {
-    std::vector<std::string> a = {"simulate", "--quiet", "--scenario",
-                                  (configs / "scenarios" / (job.c.scenario + ".yaml")).string(), "--payload", platform,
-                                  "--out", job.data.string(), "--speed-scale", Fixed(job.c.speed_scale, 3), "--imu-noise-scale",
-                                  Fixed(job.c.imu_noise_scale, 3), "--imu-bias-scale", Fixed(job.c.imu_bias_scale, 3)};
+    std::vector<std::string> a = {"simulate",
+                                  "--quiet",
+                                  "--scenario",
+                                  (configs / "scenarios" / (job.c.scenario + ".yaml")).string(),
+                                  "--payload",
+                                  platform,
+                                  "--out",
+                                  job.data.string(),
+                                  "--speed-scale",
+                                  Fixed(job.c.speed_scale, 3),
+                                  "--imu-noise-scale",
+                                  Fixed(job.c.imu_noise_scale, 3),
+                                  "--imu-bias-scale",
+                                  Fixed(job.c.imu_bias_scale, 3)};
     if (!duration.empty()) a.insert(a.end(), {"--duration-s", duration});
     if (options.seed != 0) a.insert(a.end(), {"--seed", std::to_string(options.seed)});
     return a;
   }
-  return {"run", "--quiet", "--threads", "1", "--platform", platform, "--data", job.data.string(), "--out",
-          job.run.string()};
+  return {"run",    "--quiet", "--threads",       "1",     "--platform",
+          platform, "--data",  job.data.string(), "--out", job.run.string()};
 }
 
 struct Row {
@@ -154,18 +164,28 @@ Row ReadRow(const Job& job, bool whole_scenarios) {
   const nlohmann::json check = run.contains("loop_closure_check") ? run["loop_closure_check"] : nlohmann::json();
   const double loops = Number(mapping, "loop_closures");
   const double false_loops = check.is_object() ? Number(check, "false_closures") : 0.0;
-  const std::string drift = metrics["drift_percent"].is_number() ? Fixed(metrics["drift_percent"].get<double>(), 2) : "n/a";
+  const std::string drift =
+      metrics["drift_percent"].is_number() ? Fixed(metrics["drift_percent"].get<double>(), 2) : "n/a";
   const auto rot_text = [&]() {
     if (!rot.is_array() || rot.size() != 3) return std::string("n/a");
-    return Fixed(rot[0].get<double>(), 2) + ", " + Fixed(rot[1].get<double>(), 2) + ", " + Fixed(rot[2].get<double>(), 2);
+    return Fixed(rot[0].get<double>(), 2) + ", " + Fixed(rot[1].get<double>(), 2) + ", " +
+           Fixed(rot[2].get<double>(), 2);
   };
-  row.cells = {Fixed(ate, 3), Fixed(Number(run["odometry"], "ate_rmse_m"), 3), Fixed(scale, 3), drift, rot_text(),
-               Fixed(loops, 0) + " (" + Fixed(false_loops, 0) + ")", Fixed(Number(metrics, "map_error_aligned_mean_m"), 3),
-               Fixed(Number(run, "realtime_factor"), 1), Fixed(Number(run, "peak_rss_mb"), 0),
+  row.cells = {Fixed(ate, 3),
+               Fixed(Number(run["odometry"], "ate_rmse_m"), 3),
+               Fixed(scale, 3),
+               drift,
+               rot_text(),
+               Fixed(loops, 0) + " (" + Fixed(false_loops, 0) + ")",
+               Fixed(Number(metrics, "map_error_aligned_mean_m"), 3),
+               Fixed(Number(run, "realtime_factor"), 1),
+               Fixed(Number(run, "peak_rss_mb"), 0),
                Fixed(Number(run["localizer"], "scans_matched"), 0) + "/" + Fixed(Number(run, "scans"), 0)};
   const double limit = job.c.variant == "nominal" ? kNominalAteM : kVariantAteM;
-  if (ate < 0.0 || ate > kDivergedAteM) row.misses.push_back("diverged");
-  else if (ate > limit) row.misses.push_back("ATE > " + Fixed(limit, 2) + " m");
+  if (ate < 0.0 || ate > kDivergedAteM)
+    row.misses.push_back("diverged");
+  else if (ate > limit)
+    row.misses.push_back("ATE > " + Fixed(limit, 2) + " m");
   if (false_loops > 0) row.misses.push_back("false loop closure");
   if (whole_scenarios && kLoopScenarios.count(job.c.scenario) > 0 && loops - false_loops < 1) {
     row.misses.push_back("no loop closure");
@@ -175,7 +195,8 @@ Row ReadRow(const Job& job, bool whole_scenarios) {
 
 std::string Table(const std::vector<Row>& rows, const MatrixOptions& options, const std::string& header) {
   std::ostringstream md;
-  md << kBegin << "\n\n" << header << "\n\n"
+  md << kBegin << "\n\n"
+     << header << "\n\n"
      << "| scenario | payload | variant | ATE (m) | odometry ATE (m) | scale | drift (%) | mean rot. error r, p, y "
         "(deg) | loop closures (false) | map error (m) | real-time factor | peak RSS (MiB) | scans matched | "
         "targets |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -189,9 +210,10 @@ std::string Table(const std::vector<Row>& rows, const MatrixOptions& options, co
     md << (verdict.empty() ? "met" : "**" + verdict + "**") << " |\n";
     met += r.misses.empty() ? 1 : 0;
   }
-  md << "\n" << met << " of " << rows.size() << " cases met their targets"
-     << (options.max_duration_s > 0.0 ? " (first " + Fixed(options.max_duration_s, 0) + " s of each)" : "")
-     << ".\n\n" << kEnd;
+  md << "\n"
+     << met << " of " << rows.size() << " cases met their targets"
+     << (options.max_duration_s > 0.0 ? " (first " + Fixed(options.max_duration_s, 0) + " s of each)" : "") << ".\n\n"
+     << kEnd;
   return md.str();
 }
 
@@ -273,8 +295,9 @@ int RunRobustnessMatrix(const MatrixOptions& options) {
       if (cpus[slot] == job.cpu) busy[slot] = false;
     }
     rows.push_back(ReadRow(job, options.max_duration_s <= 0.0));
-    std::cout << "matrix: " << job.c.Name() << " done: "
-              << (rows.back().misses.empty() ? std::string("targets met") : rows.back().misses.front()) << std::endl;
+    std::cout << "matrix: " << job.c.Name()
+              << " done: " << (rows.back().misses.empty() ? std::string("targets met") : rows.back().misses.front())
+              << std::endl;
     if (temporary) {
       std::error_code ignored;
       fs::remove_all(job.data, ignored);
@@ -296,8 +319,8 @@ int RunRobustnessMatrix(const MatrixOptions& options) {
   header << "Generated by `unimap bench --matrix" << (options.jobs > 1 ? " --jobs " + std::to_string(options.jobs) : "")
          << (options.max_duration_s > 0.0 ? " --max-duration-s " + Fixed(options.max_duration_s, 0) : "")
          << (options.only.empty() ? "" : " --only " + options.only)
-         << (options.seed != 0 ? " --seed " + std::to_string(options.seed) : "")
-         << "`; each case simulated with " << (options.seed != 0 ? "seed " + std::to_string(options.seed) : "its scenario's seed")
+         << (options.seed != 0 ? " --seed " + std::to_string(options.seed) : "") << "`; each case simulated with "
+         << (options.seed != 0 ? "seed " + std::to_string(options.seed) : "its scenario's seed")
          << " and mapped by `unimap run` with its payload's shipped platform file, no other option, each process "
             "pinned to one core. Targets: ATE <= 0.15 m (nominal), <= 0.25 m (2x speed, noisy IMU); a loop closure "
             "in the corridor loop, the narrow hallway and the tunnel; no false loop closure (one whose claimed motion "

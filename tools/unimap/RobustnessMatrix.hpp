@@ -11,13 +11,13 @@ namespace unimap::cli {
 // pinned to one core; the table replaces the generated part of the report
 // (between the markers kBegin and kEnd), the text around it is kept.
 struct MatrixOptions {
-  std::string configs = "configs";           // folder with scenarios/ and platforms/
-  std::string out = "docs/robustness.md";    // report whose generated table is (re)written
-  std::string work_dir;                      // datasets and run folders kept (and reused) here; empty: temporary
-  double max_duration_s = 0.0;               // > 0: simulate and map only the first seconds of each case
-  int jobs = 1;                              // cases at once, each on its own core
-  unsigned seed = 0;                         // simulation seed of every case (0: each scenario's own)
-  std::string only;                          // run only cases whose name contains this text
+  std::string configs = "configs";         // folder with scenarios/ and platforms/
+  std::string out = "docs/robustness.md";  // report whose generated table is (re)written
+  std::string work_dir;                    // datasets and run folders kept (and reused) here; empty: temporary
+  double max_duration_s = 0.0;             // > 0: simulate and map only the first seconds of each case
+  int jobs = 1;                            // cases at once, each on its own core
+  unsigned seed = 0;                       // simulation seed of every case (0: each scenario's own)
+  std::string only;                        // run only cases whose name contains this text
 };
 
 // Runs the matrix and rewrites options.out; 0 when every case met its

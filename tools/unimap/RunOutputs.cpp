@@ -46,7 +46,6 @@ std::string NoMatchAdvice(const RunOutputsInput& in) {
          "skip messages above.";
 }
 
-
 constexpr double kRadToDeg = 180.0 / M_PI;
 
 // A number for run.json: null when undefined (no pose associated).
@@ -101,12 +100,16 @@ Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
 }
 
 Json StageTimesJson(const pipeline::StageTimes& t, double processing_s, bool print) {
-  const std::pair<const char*, double> stages[] = {
-      {"deskew_s", t.deskew_s},           {"downsample_s", t.downsample_s},
-      {"match_s", t.match_s},             {"eskf_s", t.eskf_s},
-      {"map_surface_s", t.map_surface_s}, {"map_distance_s", t.map_distance_s},
-      {"map_export_s", t.map_export_s},   {"loop_search_s", t.loop_search_s},
-      {"optimisation_s", t.optimization_s}, {"outputs_s", t.outputs_s}};
+  const std::pair<const char*, double> stages[] = {{"deskew_s", t.deskew_s},
+                                                   {"downsample_s", t.downsample_s},
+                                                   {"match_s", t.match_s},
+                                                   {"eskf_s", t.eskf_s},
+                                                   {"map_surface_s", t.map_surface_s},
+                                                   {"map_distance_s", t.map_distance_s},
+                                                   {"map_export_s", t.map_export_s},
+                                                   {"loop_search_s", t.loop_search_s},
+                                                   {"optimisation_s", t.optimization_s},
+                                                   {"outputs_s", t.outputs_s}};
   Json o = Json::object();
   std::string line = "stages (s):";
   for (const auto& [key, seconds] : stages) {
@@ -208,9 +211,8 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     eval::ReportExtras map_extras;
     const std::optional<std::filesystem::path> world = ResolveWorldFile("", truth_file);
     if (!in.map_file.empty() && world) {
-      map_extras =
-          MapReportExtras(EvaluateMapFile(out / in.map_file, *world, evaluation.errors.alignment.T_target_source,
-                                          evaluation.errors.T_true_est_anchor));
+      map_extras = MapReportExtras(EvaluateMapFile(
+          out / in.map_file, *world, evaluation.errors.alignment.T_target_source, evaluation.errors.T_true_est_anchor));
     }
     eval::WriteEvaluationReport(evaluation, out, map_extras);
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {

@@ -11,11 +11,11 @@
 #include "Commands.hpp"
 #include "NumberChecks.hpp"
 #include "OutputFolder.hpp"
-#include "SignalGuard.hpp"
-#include "TextFormat.hpp"
 #include "Scenario.hpp"
 #include "ScenarioVariant.hpp"
+#include "SignalGuard.hpp"
 #include "Simulator.hpp"
+#include "TextFormat.hpp"
 #include "WorldMap.hpp"
 #include "unimap/Errors.hpp"
 
@@ -23,13 +23,13 @@ namespace unimap::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string scenario;                 // scenario YAML
-  std::string out;                      // dataset folder
-  std::optional<std::uint64_t> seed;    // replaces the scenario's
-  std::optional<std::string> payload;   // platform file or plugin name
-  std::optional<double> duration_s;     // stop early
-  bool quiet = false;                   // no progress line
-  sim::ScenarioVariant variant;         // speed and IMU error scales
+  std::string scenario;                // scenario YAML
+  std::string out;                     // dataset folder
+  std::optional<std::uint64_t> seed;   // replaces the scenario's
+  std::optional<std::string> payload;  // platform file or plugin name
+  std::optional<double> duration_s;    // stop early
+  bool quiet = false;                  // no progress line
+  sim::ScenarioVariant variant;        // speed and IMU error scales
 };
 
 void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_file, const std::string& out) {
@@ -39,8 +39,7 @@ void PrintSummary(const sim::SimulationSummary& s, const std::string& scenario_f
             << "payload    " << s.payload << "  (" << s.payload_source << ")\n"
             << "world      " << s.world << '\n'
             << "duration   " << Fixed(s.duration_s, 1) << " s\n"
-            << "path       " << Fixed(s.path_length_m, 1) << " m, max speed " << Fixed(s.max_speed_m_s, 3)
-            << " m/s\n"
+            << "path       " << Fixed(s.path_length_m, 1) << " m, max speed " << Fixed(s.max_speed_m_s, 3) << " m/s\n"
             << "imu        " << s.imu_samples << " samples (and as many ground-truth poses)\n"
             << "encoder    " << s.encoder_samples << " samples\n"
             << "scans      " << s.scans << " written";
@@ -80,8 +79,8 @@ int RunSimulate(const SimulateOptions& options) {
       std::cout << "interrupted: the dataset holds the first " << Fixed(summary.duration_s, 1)
                 << " s, complete (signal " << SignalGuard::Received() << ")\n";
     }
-    std::cout << "true map   " << world_map.points << " points from " << world_map.viewpoints
-              << " viewpoints, rays to " << Fixed(world_map.max_range_m, 0) << " m, " << Fixed(world_map.wall_s, 2)
+    std::cout << "true map   " << world_map.points << " points from " << world_map.viewpoints << " viewpoints, rays to "
+              << Fixed(world_map.max_range_m, 0) << " m, " << Fixed(world_map.wall_s, 2)
               << " s: " << world_map.file.string() << '\n';
     return 0;
   } catch (const Error& e) {
@@ -106,8 +105,7 @@ void AddSimulateCommand(CLI::App* app) {
   cmd->add_option("--seed", options->seed, "Random seed (default: the scenario's)");
   cmd->add_option("--payload", options->payload,
                   "Platform YAML or plugin name (its defaults) instead of the scenario's payload");
-  cmd->add_option("--duration-s", options->duration_s, "Simulate only the first T seconds")
-      ->check(FinitePositive());
+  cmd->add_option("--duration-s", options->duration_s, "Simulate only the first T seconds")->check(FinitePositive());
   cmd->add_option("--speed-scale", options->variant.speed_scale,
                   "The same path S times as fast (speed and yaw rate x S, acceleration x S^2, dwells / S)");
   cmd->add_option("--imu-noise-scale", options->variant.imu_noise_scale, "IMU white noise x K");

@@ -22,12 +22,12 @@ using DatasetEvent = std::variant<ImuSample, EncoderSample, OdometrySample, RawS
 
 // What a dataset's metadata.yaml says about it.
 struct DatasetInfo {
-  std::string payload;       // payload plugin the scans are for ("rotating_2d")
-  std::string scenario;      // simulated scenario, empty for real data
-  double duration_s = 0.0;   // time span of the data (s)
-  bool has_imu = false;      // imu.csv holds samples
-  bool has_encoder = false;  // encoder.csv holds samples
-  bool has_odometry = false;  // odometry.csv holds samples
+  std::string payload;           // payload plugin the scans are for ("rotating_2d")
+  std::string scenario;          // simulated scenario, empty for real data
+  double duration_s = 0.0;       // time span of the data (s)
+  bool has_imu = false;          // imu.csv holds samples
+  bool has_encoder = false;      // encoder.csv holds samples
+  bool has_odometry = false;     // odometry.csv holds samples
   bool has_groundtruth = false;  // groundtruth.tum exists
 };
 

@@ -39,14 +39,14 @@ enum class MotionModel {
 };
 
 struct MapperSettings {
-  std::string platform_file;                  // platform YAML: plugin, parameters, extrinsics
+  std::string platform_file;                   // platform YAML: plugin, parameters, extrinsics
   MapperMode mode = MapperMode::kSynchronous;  // see MapperMode
-  MotionModel motion = MotionModel::kImu;     // the prediction; its stream is expected
-  bool encoder_stream = true;                 // expect AddEncoder calls when the payload uses an
-                                              // encoder (ignored when it does not)
-  bool odometry_stream = false;               // expect AddOdometry calls (kOdometry: always)
-  int threads = 1;                            // particle-filter threads (1-64; `unimap run --threads`)
-  bool loop_closure = true;                   // search for loop closures
+  MotionModel motion = MotionModel::kImu;      // the prediction; its stream is expected
+  bool encoder_stream = true;                  // expect AddEncoder calls when the payload uses an
+                                               // encoder (ignored when it does not)
+  bool odometry_stream = false;                // expect AddOdometry calls (kOdometry: always)
+  int threads = 1;                             // particle-filter threads (1-64; `unimap run --threads`)
+  bool loop_closure = true;                    // search for loop closures
 
   // False (and *why set) when a value is out of range.
   bool IsValid(std::string* why) const;
@@ -55,10 +55,10 @@ struct MapperSettings {
 // The filter's pose of one scan, as it was estimated (local odometry frame:
 // not moved by later loop closures; Trajectory() has those).
 struct MapperPose {
-  double time_s = 0.0;                                         // the scan's end time (s)
+  double time_s = 0.0;                                            // the scan's end time (s)
   Eigen::Isometry3d T_odom_body = Eigen::Isometry3d::Identity();  // body in the odometry frame
-  bool matched = false;                                        // the scan was matched to the map
-  int points = 0;                                              // deskewed points of the scan
+  bool matched = false;                                           // the scan was matched to the map
+  int points = 0;                                                 // deskewed points of the scan
 };
 
 // What the mapper has done so far.

@@ -11,11 +11,11 @@ namespace unimap {
 // The paper's per-platform parameters (Table 1). Every payload plugin
 // declares them, with defaults that suit its sensor.
 struct UNIMAP_SDK_API CoreParameters {
-  int scans_per_3d_scan = 1;            // N: scans accumulated into one 3D scan
-  int scans_3d_per_submap = 20;         // M: 3D scans in the matching submap before it is switched
-  int scans_3d_per_optimization = 10;   // I: 3D scans between pose-graph optimisations
-  double sigma_accel_m_s2 = 0.02;       // sigma_a: accelerometer white noise per sample (m/s^2)
-  double sigma_gyro_rad_s = 0.002;      // sigma_g: gyroscope white noise per sample (rad/s)
+  int scans_per_3d_scan = 1;               // N: scans accumulated into one 3D scan
+  int scans_3d_per_submap = 20;            // M: 3D scans in the matching submap before it is switched
+  int scans_3d_per_optimization = 10;      // I: 3D scans between pose-graph optimisations
+  double sigma_accel_m_s2 = 0.02;          // sigma_a: accelerometer white noise per sample (m/s^2)
+  double sigma_gyro_rad_s = 0.002;         // sigma_g: gyroscope white noise per sample (rad/s)
   double distance_map_resolution_m = 0.1;  // distance-map voxel edge (m)
   double distance_map_max_range_m = 20.0;  // half-size of the distance-map box around the sensor (m)
 

@@ -23,8 +23,8 @@ struct LineScan {
 
 // A LineScan turned into points, with what was dropped.
 struct LineScanConversion {
-  RawScan scan;               // points in the scanner plane (z = 0), per-beam time
-  std::size_t dropped = 0;    // beams with no return or outside [range_min_m, range_max_m]
+  RawScan scan;             // points in the scanner plane (z = 0), per-beam time
+  std::size_t dropped = 0;  // beams with no return or outside [range_min_m, range_max_m]
 };
 
 // Converts beams to points in the scanner frame; start/end time span every

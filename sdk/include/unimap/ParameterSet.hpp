@@ -11,13 +11,13 @@ namespace unimap {
 
 // What one parameter is: its key, default, meaning and valid range.
 struct ParameterSpec {
-  std::string key;             // dotted key as written in a platform file
-  std::string symbol;          // the paper's symbol ("N", "sigma_a"), or empty
-  std::string description;     // one line, with the unit
-  ParameterValue default_value;  // its type is the parameter's type
+  std::string key;                                              // dotted key as written in a platform file
+  std::string symbol;                                           // the paper's symbol ("N", "sigma_a"), or empty
+  std::string description;                                      // one line, with the unit
+  ParameterValue default_value;                                 // its type is the parameter's type
   double min_value = -std::numeric_limits<double>::infinity();  // inclusive, numbers and list elements
   double max_value = std::numeric_limits<double>::infinity();   // inclusive, numbers and list elements
-  std::vector<std::string> choices;  // allowed words for a string (empty: any)
+  std::vector<std::string> choices;                             // allowed words for a string (empty: any)
 };
 
 // Every parameter a payload understands. Plugins build it in Defaults().
@@ -34,8 +34,7 @@ class UNIMAP_SDK_API ParameterSet {
 
   // Converts value to the spec's type (an integer becomes a number) and
   // checks size, range and choices; false with *why on failure.
-  bool Coerce(const std::string& key, const ParameterValue& value, ParameterValue* out,
-              std::string* why) const;
+  bool Coerce(const std::string& key, const ParameterValue& value, ParameterValue* out, std::string* why) const;
   // Every default passes Coerce unchanged and every key is non-empty.
   bool IsValid(std::string* why) const;
   // Throws ConfigError (key, reason) unless map has exactly the known keys,

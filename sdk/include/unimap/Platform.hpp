@@ -33,11 +33,11 @@ struct ParameterOverride {
 // A platform: the payload plugin a YAML file names, configured with the
 // plugin's defaults overridden by the file.
 struct Platform {
-  std::string file;                        // the platform file (or a label for inline YAML)
-  std::string plugin_name;                 // as written under `plugin:`
-  LoadedPlugin plugin;                     // configured with `parameters`
-  ParameterMap parameters;                 // effective values
-  std::vector<EffectiveParameter> effective;  // in the plugin's spec order
+  std::string file;                                // the platform file (or a label for inline YAML)
+  std::string plugin_name;                         // as written under `plugin:`
+  LoadedPlugin plugin;                             // configured with `parameters`
+  ParameterMap parameters;                         // effective values
+  std::vector<EffectiveParameter> effective;       // in the plugin's spec order
   std::vector<ParameterOverride> mapper_settings;  // the file's `mapper:` section in file order,
                                                    // checked and applied by the mapper's options
 };
@@ -46,11 +46,9 @@ struct Platform {
 // overrides, and configures the plugin. Throws ConfigError naming file,
 // line, key and reason (unknown key, wrong type, out of range, missing or
 // unloadable plugin, YAML syntax).
-UNIMAP_CORE_API Platform LoadPlatform(const std::filesystem::path& file,
-                                      const PluginLoader& loader = PluginLoader());
+UNIMAP_CORE_API Platform LoadPlatform(const std::filesystem::path& file, const PluginLoader& loader = PluginLoader());
 // The same from YAML text; file_label names it in errors.
-UNIMAP_CORE_API Platform LoadPlatformFromString(const std::string& yaml_text,
-                                                const std::string& file_label,
+UNIMAP_CORE_API Platform LoadPlatformFromString(const std::string& yaml_text, const std::string& file_label,
                                                 const PluginLoader& loader = PluginLoader());
 
 }  // namespace unimap

@@ -15,12 +15,10 @@ namespace unimap {
 using PayloadPluginFactory = std::unique_ptr<PayloadPlugin>();
 }  // namespace unimap
 
-#define UNIMAP_EXPORT_PAYLOAD_PLUGIN(PluginClass)                                        \
-  extern "C" BOOST_SYMBOL_EXPORT const std::uint32_t unimap_payload_abi_version;         \
-  extern "C" const std::uint32_t unimap_payload_abi_version = ::unimap::kPayloadAbiVersion; \
-  namespace unimap_payload_export {                                                      \
-  std::unique_ptr<::unimap::PayloadPlugin> CreatePayloadPlugin() {                       \
-    return std::make_unique<PluginClass>();                                              \
-  }                                                                                      \
-  }                                                                                      \
+#define UNIMAP_EXPORT_PAYLOAD_PLUGIN(PluginClass)                                                            \
+  extern "C" BOOST_SYMBOL_EXPORT const std::uint32_t unimap_payload_abi_version;                             \
+  extern "C" const std::uint32_t unimap_payload_abi_version = ::unimap::kPayloadAbiVersion;                  \
+  namespace unimap_payload_export {                                                                          \
+  std::unique_ptr<::unimap::PayloadPlugin> CreatePayloadPlugin() { return std::make_unique<PluginClass>(); } \
+  }                                                                                                          \
   BOOST_DLL_ALIAS(unimap_payload_export::CreatePayloadPlugin, unimap_create_payload_plugin)

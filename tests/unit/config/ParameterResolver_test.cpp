@@ -35,8 +35,7 @@ ParameterSet TestSet() {
 ConfigError ResolveError(const std::string& parameters_yaml) {
   const ParameterSet set = TestSet();
   try {
-    ParameterResolver(set).Resolve(
-        PlatformFile::Parse("plugin: x\nparameters:\n" + parameters_yaml, "p.yaml"));
+    ParameterResolver(set).Resolve(PlatformFile::Parse("plugin: x\nparameters:\n" + parameters_yaml, "p.yaml"));
   } catch (const ConfigError& e) {
     return e;
   }
@@ -87,8 +86,7 @@ TEST(ParameterResolverTest, DefaultsOverriddenWithProvenance) {
     EXPECT_EQ(effective.spec.key, set.specs()[i].key);
     EXPECT_EQ(effective.value, expected.At(effective.spec.key));
     EXPECT_EQ(effective.line, lines[i]) << effective.spec.key;
-    EXPECT_EQ(effective.source, lines[i] == 0 ? ParameterSource::kPluginDefault
-                                              : ParameterSource::kPlatformFile)
+    EXPECT_EQ(effective.source, lines[i] == 0 ? ParameterSource::kPluginDefault : ParameterSource::kPlatformFile)
         << effective.spec.key;
   }
 }
@@ -116,9 +114,9 @@ TEST(ParameterResolverTest, GroupNameAndNestedValueAreExplained) {
 
 TEST(ParameterResolverTest, TypeRangeLengthAndChoiceErrors) {
   struct Case {
-    std::string yaml;    // lines under `parameters:` (line 3 on)
-    std::string key;     // expected key
-    std::string words;   // expected in the reason
+    std::string yaml;   // lines under `parameters:` (line 3 on)
+    std::string key;    // expected key
+    std::string words;  // expected in the reason
   };
   const std::vector<Case> cases = {
       {"  count: 1.5\n", "count", "expected integer, got number 1.5"},

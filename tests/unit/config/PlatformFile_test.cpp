@@ -35,8 +35,7 @@ ConfigError ParseError(const std::string& text) {
 }
 
 // Expects parsing text to fail at line with key and a reason containing words.
-void ExpectParseError(const std::string& text, int line, const std::string& key,
-                      const std::string& words) {
+void ExpectParseError(const std::string& text, int line, const std::string& key, const std::string& words) {
   const ConfigError e = ParseError(text);
   EXPECT_EQ(e.file(), "inline.yaml") << e.what();
   EXPECT_EQ(e.line(), line) << e.what();
@@ -161,8 +160,7 @@ TEST(PlatformFileTest, ParameterValueErrors) {
 TEST(PlatformFileTest, DuplicateParameterNamesTheFirstLine) {
   ExpectParseError("plugin: x\nparameters:\n  a: 1\n  a: 2\n", 4, "a", "set twice (first on line 3)");
   // The same dotted key written nested and flat.
-  ExpectParseError("plugin: x\nparameters:\n  g:\n    k: 1\n  g.k: 2\n", 5, "g.k",
-                   "set twice (first on line 4)");
+  ExpectParseError("plugin: x\nparameters:\n  g:\n    k: 1\n  g.k: 2\n", 5, "g.k", "set twice (first on line 4)");
 }
 
 TEST(PlatformFileTest, YamlAliasCyclesAreErrorsNotEndlessRecursion) {
@@ -172,15 +170,15 @@ TEST(PlatformFileTest, YamlAliasCyclesAreErrorsNotEndlessRecursion) {
   // A list holding itself is a list element that is not a number.
   ExpectParseError("plugin: x\nparameters:\n  x: &a [*a]\n", 3, "x", "element 1 is a list");
   // An alias to a group elsewhere is fine: its keys are repeated under the new name.
-  const PlatformFile file =
-      PlatformFile::Parse("plugin: x\nparameters:\n  a: &g\n    k: 1\n  b: *g\n", "inline.yaml");
+  const PlatformFile file = PlatformFile::Parse("plugin: x\nparameters:\n  a: &g\n    k: 1\n  b: *g\n", "inline.yaml");
   ASSERT_EQ(file.overrides().size(), 2u);
   EXPECT_EQ(file.overrides()[1].key, "b.k");
 }
 
 TEST(PlatformFileTest, AliasExpansionIsBounded) {
   // Ten groups of ten aliases to the previous group: 10^10 keys if expanded.
-  std::string text = "plugin: x\nparameters:\n  l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9, j: 10}\n";
+  std::string text =
+      "plugin: x\nparameters:\n  l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9, j: 10}\n";
   for (int level = 1; level <= 10; ++level) {
     const std::string previous = "*l" + std::to_string(level - 1);
     text += "  l" + std::to_string(level) + ": &l" + std::to_string(level) + " {";
@@ -192,8 +190,7 @@ TEST(PlatformFileTest, AliasExpansionIsBounded) {
 }
 
 TEST(PlatformFileTest, ReadsFilesAndNamesThemInErrors) {
-  const fs::path folder =
-      fs::temp_directory_path() / ("unimap_platform_file_test_" + std::to_string(getpid()));
+  const fs::path folder = fs::temp_directory_path() / ("unimap_platform_file_test_" + std::to_string(getpid()));
   fs::create_directories(folder);
   const fs::path good = folder / "good.yaml";
   const fs::path bad = folder / "bad.yaml";

@@ -41,8 +41,7 @@ ConfigError LoadError(const std::string& text) {
 }
 
 // Expects the text to fail at line with key and a reason containing words.
-void ExpectLoadError(const std::string& text, int line, const std::string& key,
-                     const std::string& words) {
+void ExpectLoadError(const std::string& text, int line, const std::string& key, const std::string& words) {
   const ConfigError e = LoadError(text);
   EXPECT_EQ(e.file(), "inline.yaml") << e.what();
   EXPECT_EQ(e.line(), line) << e.what();
@@ -60,19 +59,19 @@ const EffectiveParameter& EffectiveOf(const Platform& platform, const std::strin
 }
 
 const std::string kOverrides =
-    "# test platform\n"                      // 1
-    "plugin: test_valid   # the fake one\n"  // 2
-    "parameters:\n"                          // 3
-    "  scans_per_3d_scan: 40\n"              // 4
-    "  distance_map_resolution_m: 0.2\n"     // 5
-    "  sigma_gyro_rad_s: 1\n"                // 6: integer for a number
-    "  extrinsic:\n"                         // 7
-    "    body_motor:\n"                      // 8
+    "# test platform\n"                       // 1
+    "plugin: test_valid   # the fake one\n"   // 2
+    "parameters:\n"                           // 3
+    "  scans_per_3d_scan: 40\n"               // 4
+    "  distance_map_resolution_m: 0.2\n"      // 5
+    "  sigma_gyro_rad_s: 1\n"                 // 6: integer for a number
+    "  extrinsic:\n"                          // 7
+    "    body_motor:\n"                       // 8
     "      translation_m: [0.5, -1, 2e-1]\n"  // 9
-    "  motor:\n"                             // 10
-    "    direction: cw\n"                    // 11
-    "    enabled: false\n"                   // 12
-    "  label: \"40\"\n";                     // 13: quoted, so a string
+    "  motor:\n"                              // 10
+    "    direction: cw\n"                     // 11
+    "    enabled: false\n"                    // 12
+    "  label: \"40\"\n";                      // 13: quoted, so a string
 
 TEST(PlatformTest, DefaultsOnlyWhenNothingIsOverridden) {
   const Platform platform = LoadPlatformFromString("plugin: test_valid\n", "inline.yaml", TestLoader());
@@ -110,10 +109,13 @@ TEST(PlatformTest, OverridesAreAppliedWithProvenance) {
     EXPECT_EQ(platform.effective[i].spec.key, defaults.specs()[i].key);
     EXPECT_EQ(platform.effective[i].value, p.At(defaults.specs()[i].key));
   }
-  const std::vector<std::pair<std::string, int>> set_lines = {
-      {"scans_per_3d_scan", 4}, {"distance_map_resolution_m", 5}, {"sigma_gyro_rad_s", 6},
-      {"extrinsic.body_motor.translation_m", 9}, {"motor.direction", 11}, {"motor.enabled", 12},
-      {"label", 13}};
+  const std::vector<std::pair<std::string, int>> set_lines = {{"scans_per_3d_scan", 4},
+                                                              {"distance_map_resolution_m", 5},
+                                                              {"sigma_gyro_rad_s", 6},
+                                                              {"extrinsic.body_motor.translation_m", 9},
+                                                              {"motor.direction", 11},
+                                                              {"motor.enabled", 12},
+                                                              {"label", 13}};
   for (const auto& [key, line] : set_lines) {
     EXPECT_EQ(EffectiveOf(platform, key).source, ParameterSource::kPlatformFile) << key;
     EXPECT_EQ(EffectiveOf(platform, key).line, line) << key;
@@ -135,8 +137,7 @@ TEST(PlatformTest, PluginByLibraryPath) {
 }
 
 TEST(PlatformTest, FileErrorsNameTheFileAndLine) {
-  const fs::path folder =
-      fs::temp_directory_path() / ("unimap_platform_test_" + std::to_string(getpid()));
+  const fs::path folder = fs::temp_directory_path() / ("unimap_platform_test_" + std::to_string(getpid()));
   fs::create_directories(folder / "plugins");
   // A plugin path relative to the platform file's folder.
   fs::copy_file(kTestPluginDir / "libunimap_payload_test_valid.so",
@@ -151,8 +152,7 @@ TEST(PlatformTest, FileErrorsNameTheFileAndLine) {
     EXPECT_EQ(platform.file, good.string());
     EXPECT_EQ(platform.parameters.GetInt("scans_3d_per_submap"), 7);
     EXPECT_EQ(EffectiveOf(platform, "scans_3d_per_submap").line, 3);
-    EXPECT_TRUE(fs::equivalent(platform.plugin.library_path,
-                               folder / "plugins" / "libunimap_payload_test_valid.so"));
+    EXPECT_TRUE(fs::equivalent(platform.plugin.library_path, folder / "plugins" / "libunimap_payload_test_valid.so"));
   }
   try {
     LoadPlatform(bad, TestLoader());
@@ -177,8 +177,7 @@ TEST(PlatformTest, FileErrorsNameTheFileAndLine) {
 TEST(PlatformTest, SyntaxAndStructureErrors) {
   ExpectLoadError("plugin: test_valid\nparameters:\n  label: [1, 2\n  scans_per_3d_scan: 3\n", 4, "",
                   "YAML syntax error");
-  ExpectLoadError("plugin: test_valid\nparamters:\n  label: x\n", 2, "paramters",
-                  "unknown top-level key");
+  ExpectLoadError("plugin: test_valid\nparamters:\n  label: x\n", 2, "paramters", "unknown top-level key");
   ExpectLoadError("parameters:\n  label: x\n", 0, "plugin", "missing 'plugin'");
   ExpectLoadError("", 0, "plugin", "missing 'plugin'");
 }
@@ -202,22 +201,18 @@ TEST(PlatformTest, ParameterErrorsNameLineKeyAndReason) {
   ExpectLoadError(head + "  scans_per_3d_scn: 4\n", 3, "scans_per_3d_scn",
                   "unknown parameter (did you mean 'scans_per_3d_scan'?)");
   ExpectLoadError(head + "  label: x\n  extrinsic:\n    body_motr:\n      rpy_deg: [0, 0, 0]\n", 6,
-                  "extrinsic.body_motr.rpy_deg",
-                  "did you mean 'extrinsic.body_motor.rpy_deg'?");
-  ExpectLoadError(head + "  wholly_unrelated_setting: 1\n", 3, "wholly_unrelated_setting",
-                  "unknown parameter");
+                  "extrinsic.body_motr.rpy_deg", "did you mean 'extrinsic.body_motor.rpy_deg'?");
+  ExpectLoadError(head + "  wholly_unrelated_setting: 1\n", 3, "wholly_unrelated_setting", "unknown parameter");
   ExpectLoadError(head + "  extrinsic: 5\n", 3, "extrinsic", "is a group");
-  ExpectLoadError(head + "  scans_per_3d_scan: 1.5\n", 3, "scans_per_3d_scan",
-                  "expected integer, got number 1.5");
-  ExpectLoadError(head + "  motor:\n    enabled: yes\n", 4, "motor.enabled",
-                  "expected bool, got string yes");
+  ExpectLoadError(head + "  scans_per_3d_scan: 1.5\n", 3, "scans_per_3d_scan", "expected integer, got number 1.5");
+  ExpectLoadError(head + "  motor:\n    enabled: yes\n", 4, "motor.enabled", "expected bool, got string yes");
   ExpectLoadError(head + "  scans_per_3d_scan: 0\n", 3, "scans_per_3d_scan", "out of range [1, 100000]");
-  ExpectLoadError(head + "  extrinsic.body_motor.rpy_deg: [0, 0, 400]\n", 3,
-                  "extrinsic.body_motor.rpy_deg", "out of range [-360, 360]");
-  ExpectLoadError(head + "  extrinsic.body_motor.translation_m: [1, 2]\n", 3,
-                  "extrinsic.body_motor.translation_m", "expected a list of 3 numbers, got 2");
-  ExpectLoadError(head + "  extrinsic.body_motor.translation_m: [1, x, 2]\n", 3,
-                  "extrinsic.body_motor.translation_m", "element 2 is 'x'");
+  ExpectLoadError(head + "  extrinsic.body_motor.rpy_deg: [0, 0, 400]\n", 3, "extrinsic.body_motor.rpy_deg",
+                  "out of range [-360, 360]");
+  ExpectLoadError(head + "  extrinsic.body_motor.translation_m: [1, 2]\n", 3, "extrinsic.body_motor.translation_m",
+                  "expected a list of 3 numbers, got 2");
+  ExpectLoadError(head + "  extrinsic.body_motor.translation_m: [1, x, 2]\n", 3, "extrinsic.body_motor.translation_m",
+                  "element 2 is 'x'");
   ExpectLoadError(head + "  motor.direction: up\n", 3, "motor.direction", "not one of: cw, ccw");
   ExpectLoadError(head + "  label:\n", 3, "label", "no value given");
   ExpectLoadError(head + "  label: a\n  label: b\n", 4, "label", "set twice (first on line 3)");

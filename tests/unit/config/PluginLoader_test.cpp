@@ -31,9 +31,7 @@ const std::string kValidFile = "libunimap_payload_test_valid.so";
 }
 
 // The file a test plugin was built to.
-fs::path TestPlugin(const std::string& name) {
-  return kTestPluginDir / PluginLoader::LibraryFileName(name);
-}
+fs::path TestPlugin(const std::string& name) { return kTestPluginDir / PluginLoader::LibraryFileName(name); }
 
 // Sets (or unsets, for nullopt) UNIMAP_PLUGIN_PATH for one scope.
 class ScopedPluginPath {
@@ -62,8 +60,7 @@ class ScopedPluginPath {
 class TempFolder {
  public:
   explicit TempFolder(const std::string& tag)
-      : path_(fs::temp_directory_path() /
-              ("unimap_loader_test_" + tag + "_" + std::to_string(getpid()))) {
+      : path_(fs::temp_directory_path() / ("unimap_loader_test_" + tag + "_" + std::to_string(getpid()))) {
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -121,8 +118,7 @@ TEST(PluginLoaderTest, LoadsTheValidTestPluginByName) {
   EXPECT_EQ(loaded.abi_version, kPayloadAbiVersion);
   EXPECT_TRUE(loaded.library_path.is_absolute());
   EXPECT_TRUE(fs::equivalent(loaded.library_path, TestPlugin("test_valid")));
-  EXPECT_EQ(loaded.plugin->Defaults().Find("motor.direction")->default_value,
-            ParameterValue(std::string("ccw")));
+  EXPECT_EQ(loaded.plugin->Defaults().Find("motor.direction")->default_value, ParameterValue(std::string("ccw")));
 }
 
 TEST(PluginLoaderTest, LoadsByPathWithoutSearching) {
@@ -177,15 +173,13 @@ TEST(PluginLoaderTest, OtherAbiVersionIsRefusedBeforeTheFactoryRuns) {
 }
 
 TEST(PluginLoaderTest, ThrowingFactoryIsAFactoryError) {
-  const std::string message =
-      LoadErrorOf<PluginFactoryError>(PluginLoader({kTestPluginDir}), "factory_throws");
+  const std::string message = LoadErrorOf<PluginFactoryError>(PluginLoader({kTestPluginDir}), "factory_throws");
   EXPECT_TRUE(Contains(message, TestPlugin("factory_throws").string()));
   EXPECT_TRUE(Contains(message, "deliberate failure in ThrowingPlugin()"));
 }
 
 TEST(PluginLoaderTest, NullFactoryIsAFactoryError) {
-  const std::string message =
-      LoadErrorOf<PluginFactoryError>(PluginLoader({kTestPluginDir}), "factory_null");
+  const std::string message = LoadErrorOf<PluginFactoryError>(PluginLoader({kTestPluginDir}), "factory_null");
   EXPECT_TRUE(Contains(message, TestPlugin("factory_null").string()));
   EXPECT_TRUE(Contains(message, "nullptr"));
 }
@@ -209,8 +203,7 @@ TEST(PluginLoaderTest, DefaultFoldersAreEnvironmentThenBuildThenInstall) {
   const fs::path install = fs::path(UNIMAP_BINARY_DIR) / "lib" / "unimap" / "plugins";
   {
     const ScopedPluginPath env(std::string(":/first::/second:"));
-    EXPECT_EQ(PluginLoader::DefaultSearchFolders(),
-              (std::vector<fs::path>{"/first", "/second", build, install}));
+    EXPECT_EQ(PluginLoader::DefaultSearchFolders(), (std::vector<fs::path>{"/first", "/second", build, install}));
     EXPECT_EQ(PluginLoader().folders(), PluginLoader::DefaultSearchFolders());
   }
   {
@@ -246,17 +239,20 @@ TEST(PluginLoaderTest, DiscoverListsPluginFilesSortedByNameFirstWins) {
   const TempFolder extra("discover");
   fs::copy_file(TestPlugin("garbage"), extra.path() / kValidFile);
   fs::copy_file(TestPlugin("garbage"), extra.path() / "libunimap_payload_aaa_extra.so");
-  fs::copy_file(TestPlugin("garbage"), extra.path() / "libother.so");             // not a payload name
-  fs::copy_file(TestPlugin("garbage"), extra.path() / "libunimap_payload_.so");    // no payload name
+  fs::copy_file(TestPlugin("garbage"), extra.path() / "libother.so");            // not a payload name
+  fs::copy_file(TestPlugin("garbage"), extra.path() / "libunimap_payload_.so");  // no payload name
   fs::create_directory(extra.path() / "libunimap_payload_folder.so");            // not a file
 
   const PluginLoader loader({kTestPluginDir / "no_such_folder", extra.path(), kTestPluginDir});
-  const std::vector<fs::path> expected = {
-      extra.path() / "libunimap_payload_aaa_extra.so", TestPlugin("abi_mismatch"),
-      TestPlugin("factory_null"),                       TestPlugin("factory_throws"),
-      TestPlugin("garbage"),                            TestPlugin("no_factory"),
-      TestPlugin("no_symbols"),                         extra.path() / kValidFile,
-      TestPlugin("unresolved")};
+  const std::vector<fs::path> expected = {extra.path() / "libunimap_payload_aaa_extra.so",
+                                          TestPlugin("abi_mismatch"),
+                                          TestPlugin("factory_null"),
+                                          TestPlugin("factory_throws"),
+                                          TestPlugin("garbage"),
+                                          TestPlugin("no_factory"),
+                                          TestPlugin("no_symbols"),
+                                          extra.path() / kValidFile,
+                                          TestPlugin("unresolved")};
   EXPECT_EQ(loader.Discover(), expected);
   EXPECT_TRUE(PluginLoader(std::vector<fs::path>{}).Discover().empty());
 }

@@ -33,8 +33,7 @@ inline ImuSample PerfectImu(const Motion& motion, double t) {
 // Spinning in place about a fixed tilted axis.
 inline MotionSample ConstantRotation(double t) {
   const Eigen::Vector3d w(0.3, -0.2, 0.5);
-  return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-          ExpQ(w * t).toRotationMatrix(), w};
+  return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), ExpQ(w * t).toRotationMatrix(), w};
 }
 
 // A 5 m circle at 0.4 rad/s, heading along the tangent.
@@ -55,8 +54,7 @@ inline MotionSample FigureEight(double t) {
   MotionSample m;
   m.p = Eigen::Vector3d(4 * std::sin(W * t), 2 * std::sin(2 * W * t), 0.5 * std::sin(W * t));
   m.v = Eigen::Vector3d(4 * W * std::cos(W * t), 4 * W * std::cos(2 * W * t), 0.5 * W * std::cos(W * t));
-  m.a = Eigen::Vector3d(-4 * W * W * std::sin(W * t), -8 * W * W * std::sin(2 * W * t),
-                        -0.5 * W * W * std::sin(W * t));
+  m.a = Eigen::Vector3d(-4 * W * W * std::sin(W * t), -8 * W * W * std::sin(2 * W * t), -0.5 * W * W * std::sin(W * t));
   const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
   m.R = Eigen::AngleAxisd(0.5 * std::sin(0.7 * t), axis).toRotationMatrix();
   m.w_body = axis * 0.5 * 0.7 * std::cos(0.7 * t);

@@ -72,7 +72,7 @@ TEST(Eskf, RejectsNonIncreasingOrGappedImu) {
   s.time_s = 1.0;
   EXPECT_TRUE(filter.Propagate(s));
   EXPECT_FALSE(filter.Propagate(s));  // same time
-  s.time_s = 1.5;                      // gap of 0.5 s > max_imu_gap_s
+  s.time_s = 1.5;                     // gap of 0.5 s > max_imu_gap_s
   EXPECT_FALSE(filter.Propagate(s));
   EXPECT_EQ(filter.state().time_s, 1.0);
 }
@@ -163,10 +163,9 @@ TEST(Eskf, FilterIsConsistentOverMonteCarloRuns) {
     }
     const NavState truth = TruthState(testing::FigureEight, 20.0);
     Eigen::Matrix<double, 15, 1> e;
-    e << truth.p_world_body_m - filter.state().p_world_body_m,
-        truth.v_world_m_s - filter.state().v_world_m_s,
-        LogQ(filter.state().q_world_body.conjugate() * truth.q_world_body),
-        ba - filter.state().accel_bias_m_s2, bg - filter.state().gyro_bias_rad_s;
+    e << truth.p_world_body_m - filter.state().p_world_body_m, truth.v_world_m_s - filter.state().v_world_m_s,
+        LogQ(filter.state().q_world_body.conjugate() * truth.q_world_body), ba - filter.state().accel_bias_m_s2,
+        bg - filter.state().gyro_bias_rad_s;
     nees_sum += e.dot(filter.covariance().ldlt().solve(e));
   }
   const double anees = nees_sum / runs;

@@ -9,8 +9,8 @@
 namespace unimap::estimation {
 namespace {
 
-std::vector<ImuSample> StaticSamples(const Eigen::Quaterniond& q, const Eigen::Vector3d& bg,
-                                     double noise, int count, const Eigen::Vector3d& ba = Eigen::Vector3d::Zero()) {
+std::vector<ImuSample> StaticSamples(const Eigen::Quaterniond& q, const Eigen::Vector3d& bg, double noise, int count,
+                                     const Eigen::Vector3d& ba = Eigen::Vector3d::Zero()) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> n(0.0, noise);
   std::vector<ImuSample> out;
@@ -40,7 +40,8 @@ TEST(AlignFromStatic, RecoversRollPitchAndGyroBias) {
 
 TEST(AlignFromStatic, RefusesMotionAndShortWindows) {
   StaticAlignmentOptions options;
-  EXPECT_FALSE(AlignFromStatic(StaticSamples(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 0.0, 50), options).ok);
+  EXPECT_FALSE(
+      AlignFromStatic(StaticSamples(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 0.0, 50), options).ok);
   const StaticAlignment moving =
       AlignFromStatic(StaticSamples(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 1.0, 400), options);
   EXPECT_FALSE(moving.ok);
@@ -117,8 +118,7 @@ TEST(PlaceAtPose, WithoutAlignmentTakesThePoseAsIs) {
   StaticAlignment failed;
   failed.reason = "too few samples";
   NavState state;
-  const PoseStart placed =
-      PlaceAtPose(failed, Pose(start.q, start.p), InitialAttitude::kGravity, 9.81, 0.3, &state);
+  const PoseStart placed = PlaceAtPose(failed, Pose(start.q, start.p), InitialAttitude::kGravity, 9.81, 0.3, &state);
   EXPECT_EQ(placed.attitude, InitialAttitude::kPose);
   EXPECT_LT(LogQ(state.q_world_body.conjugate() * start.q).norm(), 1e-12);
   EXPECT_TRUE(state.p_world_body_m.isApprox(start.p, 1e-12));

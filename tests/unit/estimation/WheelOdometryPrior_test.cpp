@@ -64,11 +64,11 @@ TEST(WheelOdometryPriorTest, GapsAndBadReadingsGiveNoPrediction) {
   WheelOdometryPrior prior(options);
   prior.AddOdometry(Reading(0.0));
   prior.AddOdometry(Reading(0.05));
-  prior.AddOdometry(Reading(0.5));   // a 0.45 s gap
-  prior.AddOdometry(Reading(0.4));   // backwards: skipped
+  prior.AddOdometry(Reading(0.5));  // a 0.45 s gap
+  prior.AddOdometry(Reading(0.4));  // backwards: skipped
   OdometrySample nan = Reading(0.6);
   nan.T_odom_body.translation().x() = std::nan("");
-  prior.AddOdometry(nan);           // not finite: skipped
+  prior.AddOdometry(nan);  // not finite: skipped
   EXPECT_EQ(prior.rejected(), 2u);
   EXPECT_TRUE(prior.Predict(0.0, 0.05).ok);
   const MotionPrediction gap = prior.Predict(0.0, 0.3);

@@ -15,10 +15,10 @@ inline StampedPose MakePose(double time_s, const Eigen::Vector3d& p, double roll
   StampedPose pose;
   pose.time_s = time_s;
   pose.T_map_body.translation() = p;
-  pose.T_map_body.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-                              Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-                              Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-                                 .toRotationMatrix();
+  pose.T_map_body.linear() =
+      (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   return pose;
 }
 

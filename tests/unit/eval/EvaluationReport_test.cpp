@@ -24,8 +24,7 @@ std::string ReadAll(const std::filesystem::path& file) {
 class EvaluationReportTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::path(::testing::TempDir()) /
-           ("unimap_eval_report_" + std::to_string(::getpid()));
+    dir_ = std::filesystem::path(::testing::TempDir()) / ("unimap_eval_report_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
@@ -40,8 +39,7 @@ TEST_F(EvaluationReportTest, WritesJsonAndPngs) {
     estimate[k].T_map_body.translation().z() += 0.001 * static_cast<double>(k);
   }
   const TrajectoryEvaluation ev = EvaluateTrajectory(estimate, truth);
-  const std::vector<std::filesystem::path> written =
-      WriteEvaluationReport(ev, dir_ / "out");
+  const std::vector<std::filesystem::path> written = WriteEvaluationReport(ev, dir_ / "out");
   ASSERT_EQ(written.size(), 5u);
   for (const auto& file : written) EXPECT_TRUE(std::filesystem::is_regular_file(file)) << file;
   for (const auto& entry : std::filesystem::directory_iterator(dir_ / "out")) {

@@ -9,7 +9,6 @@
 namespace unimap::eval {
 namespace {
 
-
 TEST(LinePlotTest, NiceTicksUseOneTwoFiveSteps) {
   double lo = 0.3;
   double hi = 9.2;

@@ -30,7 +30,8 @@ Eigen::Isometry3d TrueMotion(double t0, double t1) {
 }
 
 TEST(LoopClosureCheck, TrueClaimsBetweenSamplesAreNotFalse) {
-  const std::vector<ClaimedMotion> claims = {{1.25, 17.05, TrueMotion(1.25, 17.05)}, {0.0, 20.0, TrueMotion(0.0, 20.0)}};
+  const std::vector<ClaimedMotion> claims = {{1.25, 17.05, TrueMotion(1.25, 17.05)},
+                                             {0.0, 20.0, TrueMotion(0.0, 20.0)}};
   const LoopClosureCheck check = CheckLoopClosures(claims, Truth());
   EXPECT_EQ(check.checked, 2u);
   EXPECT_EQ(check.false_closures, 0u);
@@ -54,9 +55,8 @@ TEST(LoopClosureCheck, ClaimsOffByMoreThanTheLimitsAreFalse) {
 }
 
 TEST(LoopClosureCheck, ClaimsOutsideTheTruthAreNotChecked) {
-  const LoopClosureCheck check = CheckLoopClosures({{-1.0, 5.0, Eigen::Isometry3d::Identity()},
-                                                    {5.0, 20.5, Eigen::Isometry3d::Identity()}},
-                                                   Truth());
+  const LoopClosureCheck check = CheckLoopClosures(
+      {{-1.0, 5.0, Eigen::Isometry3d::Identity()}, {5.0, 20.5, Eigen::Isometry3d::Identity()}}, Truth());
   EXPECT_EQ(check.checked, 0u);
   EXPECT_EQ(check.false_closures, 0u);
   EXPECT_EQ(CheckLoopClosures({{1.0, 2.0, TrueMotion(1.0, 2.0)}}, {}).checked, 0u);

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "unimap/Errors.hpp"
 
@@ -70,8 +70,7 @@ TEST(MapError, PercentileIsTheNearestRank) {
     return out;
   };
   // rank = ceil(0.95 n): n = 1 -> 1, 19 -> 19 (the max), 20 -> 19, 21 -> 20, 40 -> 38, 41 -> 39.
-  const std::pair<std::size_t, double> cases[] = {{1, 1.0}, {19, 19.0}, {20, 19.0}, {21, 20.0}, {40, 38.0},
-                                                  {41, 39.0}};
+  const std::pair<std::size_t, double> cases[] = {{1, 1.0}, {19, 19.0}, {20, 19.0}, {21, 20.0}, {40, 38.0}, {41, 39.0}};
   for (const auto& [n, p95] : cases) {
     const MapErrorStats stats = ComputeMapError(points(n), by_x);
     EXPECT_EQ(stats.p95_m, p95) << "n = " << n;
@@ -123,8 +122,10 @@ TEST(MapError, BadInputIsAnInputError) {
     return ++calls == 3 ? std::numeric_limits<double>::infinity() : 0.5;
   };
   ExpectError(three, infinite_third, "point 2 has no finite distance");
-  ExpectError(three, [](const Eigen::Vector3d&) { return -0.1; }, "point 0 has no finite distance");
-  ExpectError(three, [](const Eigen::Vector3d&) { return std::nan(""); }, "point 0 has no finite distance");
+  ExpectError(
+      three, [](const Eigen::Vector3d&) { return -0.1; }, "point 0 has no finite distance");
+  ExpectError(
+      three, [](const Eigen::Vector3d&) { return std::nan(""); }, "point 0 has no finite distance");
 }
 
 }  // namespace

@@ -33,9 +33,9 @@ TrajectoryMetrics Sample() {
 TEST(MetricsJsonTest, ParsesAndHasEveryKeyWithExactValues) {
   const YAML::Node json = YAML::Load(MetricsToJson(Sample()));
   ASSERT_TRUE(json.IsMap());
-  for (const char* key : {"ate_rmse_m", "path_length_m", "drift_percent", "max_abs_error_m",
-                          "mean_abs_rot_error_deg", "rot_drift_deg_per_m", "rpe_trans_percent",
-                          "poses_associated", "poses_skipped", "duration_s"}) {
+  for (const char* key :
+       {"ate_rmse_m", "path_length_m", "drift_percent", "max_abs_error_m", "mean_abs_rot_error_deg",
+        "rot_drift_deg_per_m", "rpe_trans_percent", "poses_associated", "poses_skipped", "duration_s"}) {
     EXPECT_TRUE(json[key].IsDefined()) << key;
   }
   const std::vector<std::string> keys = MetricsJsonKeys();

@@ -12,8 +12,8 @@ namespace {
 
 using testing::MakePose;
 
-constexpr double kSpeed = 0.7;     // m/s along x
-constexpr double kYawRate = 0.1;   // rad/s
+constexpr double kSpeed = 0.7;    // m/s along x
+constexpr double kYawRate = 0.1;  // rad/s
 
 // Truth at 10 Hz over [0, 10] s: x = v t, yaw = w t. Linear position and
 // constant-rate yaw make lerp / slerp exact.
@@ -88,8 +88,8 @@ TEST(TrajectoryAssociationTest, SkipsPosesInTruthGapsBeyondTheTolerance) {
 
 TEST(TrajectoryAssociationTest, TruthSpanHasInterpolatedEndsAndRawSamplesBetween) {
   const std::vector<StampedPose> truth = Truth10Hz();
-  const TrajectoryAssociation a = AssociateTrajectories(
-      {MakePose(1.05, Eigen::Vector3d::Zero()), MakePose(2.05, Eigen::Vector3d::Zero())}, truth);
+  const TrajectoryAssociation a =
+      AssociateTrajectories({MakePose(1.05, Eigen::Vector3d::Zero()), MakePose(2.05, Eigen::Vector3d::Zero())}, truth);
   ASSERT_EQ(a.truth_span.size(), 12u);  // 1.05, 1.1 .. 2.0 (10 samples), 2.05
   EXPECT_DOUBLE_EQ(a.truth_span.front().time_s, 1.05);
   EXPECT_NEAR(a.truth_span.front().T_map_body.translation().x(), kSpeed * 1.05, 1e-12);

@@ -20,8 +20,8 @@ TEST(TrajectoryErrorsTest, AnchorsTheEstimateOnTheTruthStart) {
   const double yaw0 = M_PI / 2.0;
   a.pairs.push_back({0.0, MakePose(0, {0, 0, 0}).T_map_body, MakePose(0, {5, 0, 0}, 0, 0, yaw0).T_map_body});
   a.pairs.push_back({1.0, MakePose(1, {1, 0, 0}).T_map_body, MakePose(1, {5, 1, 0}, 0, 0, yaw0).T_map_body});
-  a.pairs.push_back({2.0, MakePose(2, {1, 1, 0}, 0, 0, 0.1).T_map_body,
-                     MakePose(2, {4, 1.2, 0}, 0, 0, yaw0).T_map_body});
+  a.pairs.push_back(
+      {2.0, MakePose(2, {1, 1, 0}, 0, 0, 0.1).T_map_body, MakePose(2, {4, 1.2, 0}, 0, 0, yaw0).T_map_body});
   const TrajectoryErrors errors = ComputeTrajectoryErrors(a);
   ASSERT_EQ(errors.poses.size(), 3u);
   // Anchored estimate at k = 2: truth start (5, 0) + R(90 deg) (1, 1) = (4, 1).

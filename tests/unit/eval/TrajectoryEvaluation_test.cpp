@@ -196,7 +196,8 @@ TEST(TrajectoryEvaluationTest, AnEstimateThatTravelsLessHasItsScale) {
   // shrinkage, trajectory_scale measures it.
   std::vector<StampedPose> estimate = Helix();
   for (StampedPose& p : estimate) {
-    p.T_map_body.translation() = 0.97 * (p.T_map_body.translation() - Eigen::Vector3d(3, 1, 0)) + Eigen::Vector3d(5, -2, 1);
+    p.T_map_body.translation() =
+        0.97 * (p.T_map_body.translation() - Eigen::Vector3d(3, 1, 0)) + Eigen::Vector3d(5, -2, 1);
   }
   const TrajectoryMetrics m = EvaluateTrajectory(estimate, Helix()).metrics;
   ASSERT_TRUE(m.trajectory_scale.has_value());

@@ -62,8 +62,9 @@ TEST(UmeyamaAlignmentTest, SimilarityRecoversARandomScaledTransform) {
   std::uniform_real_distribution<double> scales(0.2, 5.0);
   for (int trial = 0; trial < 20; ++trial) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = Eigen::Quaterniond(Eigen::Vector4d(uniform(rng), uniform(rng), uniform(rng), uniform(rng)).normalized())
-                     .toRotationMatrix();
+    T.linear() =
+        Eigen::Quaterniond(Eigen::Vector4d(uniform(rng), uniform(rng), uniform(rng), uniform(rng)).normalized())
+            .toRotationMatrix();
     T.translation() = Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng));
     const double c = scales(rng);
     std::vector<Eigen::Vector3d> source;

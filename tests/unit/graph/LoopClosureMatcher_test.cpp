@@ -58,12 +58,13 @@ void Print(const char* name, const LoopClosureResult& r, const Eigen::Isometry3d
   const Eigen::AngleAxisd error(truth.linear().transpose() * r.T_submap_body.linear());
   const Eigen::Vector3d rotation_deg = error.angle() * error.axis() / kDeg;
   const Eigen::Vector3d position_m = r.T_submap_body.translation() - truth.translation();
-  std::printf("[ %s ] %s | candidates %d | error %.4f m (%.3f %.3f %.3f) %.3f deg (%.3f %.3f %.3f) | sigma %.3f m "
-              "%.4f rad | %.1f ms\n",
-              name, r.reason.c_str(), r.candidates, position_m.norm(), position_m.x(), position_m.y(),
-              position_m.z(), rotation_deg.norm(), rotation_deg.x(), rotation_deg.y(), rotation_deg.z(),
-              std::sqrt(r.covariance.diagonal().head<3>().maxCoeff()),
-              std::sqrt(r.covariance.diagonal().tail<3>().maxCoeff()), ms);
+  std::printf(
+      "[ %s ] %s | candidates %d | error %.4f m (%.3f %.3f %.3f) %.3f deg (%.3f %.3f %.3f) | sigma %.3f m "
+      "%.4f rad | %.1f ms\n",
+      name, r.reason.c_str(), r.candidates, position_m.norm(), position_m.x(), position_m.y(), position_m.z(),
+      rotation_deg.norm(), rotation_deg.x(), rotation_deg.y(), rotation_deg.z(),
+      std::sqrt(r.covariance.diagonal().head<3>().maxCoeff()), std::sqrt(r.covariance.diagonal().tail<3>().maxCoeff()),
+      ms);
 }
 
 double Ms(std::chrono::steady_clock::time_point since) {
@@ -163,9 +164,9 @@ TEST(LoopClosureMatcherTest, ConstructorRejectsBadInputs) {
   bad.min_score = 2.0;
   EXPECT_THROW(LoopClosureMatcher({Eigen::Vector3f::Zero()}, bad), ConfigError);
   // Points kilometres apart: too large a box.
-  EXPECT_THROW(LoopClosureMatcher({Eigen::Vector3f::Zero(), Eigen::Vector3f(5000.0f, 5000.0f, 100.0f)},
-                                  LoopClosureOptions{}),
-               InputError);
+  EXPECT_THROW(
+      LoopClosureMatcher({Eigen::Vector3f::Zero(), Eigen::Vector3f(5000.0f, 5000.0f, 100.0f)}, LoopClosureOptions{}),
+      InputError);
 }
 
 // Repeated structure: the scan matches every period_m along the corridor.

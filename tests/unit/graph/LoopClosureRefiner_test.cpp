@@ -21,8 +21,8 @@ struct World {
   LoopClosureDistanceField field;
   explicit World(const test::Scene& scene)
       : points(test::SampleSurfaces(scene, 0.08f)),
-        field(points, options.fine_resolution_m, options.fine_clamp_m, options.normal_cell_m,
-              options.planarity_ratio) {}
+        field(points, options.fine_resolution_m, options.fine_clamp_m, options.normal_cell_m, options.planarity_ratio) {
+  }
 };
 
 std::vector<Eigen::Vector3f> Scan(const test::Scene& scene, const Eigen::Isometry3d& T_world_body, float range_m) {

@@ -37,16 +37,16 @@ inline Scene Room(float sx, float sy, float sz) {
 inline Scene DistinctiveHall() {
   Scene scene = Room(24.0f, 10.0f, 3.0f);
   const std::vector<Box> features = {
-      {{2.0f, 1.5f, 0.0f}, {3.2f, 2.3f, 1.0f}},      // crate
-      {{6.0f, 7.0f, 0.0f}, {6.5f, 7.5f, 3.0f}},      // pillar
-      {{9.5f, 0.0f, 0.0f}, {11.0f, 0.6f, 2.0f}},     // cabinet on the wall
-      {{13.0f, 4.0f, 0.0f}, {13.4f, 6.5f, 1.2f}},    // low wall
-      {{17.0f, 2.0f, 0.0f}, {17.6f, 2.4f, 3.0f}},    // pillar
-      {{20.0f, 7.0f, 0.0f}, {22.5f, 8.0f, 0.8f}},    // table
-      {{4.0f, 9.2f, 0.0f}, {5.0f, 10.0f, 2.2f}},     // shelf
-      {{15.0f, 8.0f, 0.0f}, {15.3f, 10.0f, 3.0f}},   // partition
-      {{8.0f, 3.0f, 2.4f}, {12.0f, 3.4f, 3.0f}},     // ceiling beam
-      {{0.0f, 4.0f, 0.0f}, {0.8f, 5.5f, 1.5f}},      // counter
+      {{2.0f, 1.5f, 0.0f}, {3.2f, 2.3f, 1.0f}},     // crate
+      {{6.0f, 7.0f, 0.0f}, {6.5f, 7.5f, 3.0f}},     // pillar
+      {{9.5f, 0.0f, 0.0f}, {11.0f, 0.6f, 2.0f}},    // cabinet on the wall
+      {{13.0f, 4.0f, 0.0f}, {13.4f, 6.5f, 1.2f}},   // low wall
+      {{17.0f, 2.0f, 0.0f}, {17.6f, 2.4f, 3.0f}},   // pillar
+      {{20.0f, 7.0f, 0.0f}, {22.5f, 8.0f, 0.8f}},   // table
+      {{4.0f, 9.2f, 0.0f}, {5.0f, 10.0f, 2.2f}},    // shelf
+      {{15.0f, 8.0f, 0.0f}, {15.3f, 10.0f, 3.0f}},  // partition
+      {{8.0f, 3.0f, 2.4f}, {12.0f, 3.4f, 3.0f}},    // ceiling beam
+      {{0.0f, 4.0f, 0.0f}, {0.8f, 5.5f, 1.5f}},     // counter
   };
   scene.insert(scene.end(), features.begin(), features.end());
   return scene;
@@ -155,8 +155,8 @@ inline std::vector<Eigen::Vector3f> SimulateScan(const Scene& scene, const Eigen
   const Eigen::Isometry3f T = T_world_body.cast<float>();
   std::vector<Eigen::Vector3f> points;
   for (int b = 0; b < beams; ++b) {
-    const float elevation = -max_elevation_rad + 2.0f * max_elevation_rad * static_cast<float>(b) /
-                                                     static_cast<float>(beams - 1);
+    const float elevation =
+        -max_elevation_rad + 2.0f * max_elevation_rad * static_cast<float>(b) / static_cast<float>(beams - 1);
     for (int k = 0; k < azimuths; ++k) {
       const float azimuth = 2.0f * kPi * static_cast<float>(k) / static_cast<float>(azimuths);
       const Eigen::Vector3f dir_body(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),

@@ -74,8 +74,7 @@ inline std::vector<PoseConstraint> ExactLoopClosures(const std::vector<Eigen::Is
 
 // Odometry i -> i+1 (truth, times Exp(noise) when odometry_noise), initial
 // poses by dead reckoning from truth[0], plus ExactLoopClosures.
-inline PoseGraph NoisyLoopGraph(const std::vector<Eigen::Isometry3d>& truth, bool odometry_noise,
-                                std::uint64_t seed) {
+inline PoseGraph NoisyLoopGraph(const std::vector<Eigen::Isometry3d>& truth, bool odometry_noise, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> n(0.0, 1.0);
   PoseGraph graph;

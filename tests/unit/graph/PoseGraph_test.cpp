@@ -156,10 +156,9 @@ TEST(PoseGraph, LoopClosuresRemoveOdometryDrift) {
   // The copy taken before is untouched.
   EXPECT_DOUBLE_EQ(MaxPositionError(before, truth), position_before);
   std::printf("drift: position %.4f -> %.4f m, rotation %.5f -> %.5f rad, cost %.3g -> %.3g, %d iterations\n",
-              position_before, position_after, rotation_before, rotation_after, s.initial_cost,
-              s.final_cost, s.iterations);
+              position_before, position_after, rotation_before, rotation_after, s.initial_cost, s.final_cost,
+              s.iterations);
 }
-
 
 // The cost is flat at a conflicted minimum: with cost ~25 and curvature
 // ~100 per m^2, double precision resolves the minimiser only to about
@@ -229,7 +228,7 @@ TEST(PoseGraph, WrongLoopClosureDistortsLessUnderHuber) {
   robust.AddConstraint(wrong);
   PoseGraph least_squares = robust;
 
-  PoseGraphOptions options;  // default Huber scale 1
+  PoseGraphOptions options;     // default Huber scale 1
   options.max_iterations = 50;  // the robust solve takes 14-20 steps here
   PoseGraphOptions plain = options;
   plain.loop_closure_huber_scale = 0.0;
@@ -240,8 +239,8 @@ TEST(PoseGraph, WrongLoopClosureDistortsLessUnderHuber) {
   ASSERT_TRUE(least_squares.Optimize(plain).ok);
   const double robust_distortion = MaxPositionDifference(robust, clean);
   const double plain_distortion = MaxPositionDifference(least_squares, clean);
-  std::printf("wrong loop closure moves the optimum by %.3f m under Huber, %.3f m without\n",
-              robust_distortion, plain_distortion);
+  std::printf("wrong loop closure moves the optimum by %.3f m under Huber, %.3f m without\n", robust_distortion,
+              plain_distortion);
   // Measured (seeds 42, 1, 2): Huber 0.39 m, least squares 1.75-1.81 m. The
   // Huber pull is capped at a whitened force of a = 1 (50 N/m-equivalent at
   // sigma 0.02 m) whatever the offset, so its distortion stays near 0.4 m

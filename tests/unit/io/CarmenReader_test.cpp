@@ -31,7 +31,8 @@ void WriteBzip2(const fs::path& file, const std::string& text) {
   std::string out(text.size() + text.size() / 100 + 600, '\0');
   auto size = static_cast<unsigned int>(out.size());
   std::string in = text;
-  ASSERT_EQ(BZ2_bzBuffToBuffCompress(out.data(), &size, in.data(), static_cast<unsigned int>(in.size()), 9, 0, 0), BZ_OK);
+  ASSERT_EQ(BZ2_bzBuffToBuffCompress(out.data(), &size, in.data(), static_cast<unsigned int>(in.size()), 9, 0, 0),
+            BZ_OK);
   out.resize(size);
   WriteText(file, out);
 }
@@ -147,7 +148,8 @@ TEST(CarmenReaderTest, ParsesFlaserAndOdomFieldsExactly) {
   EXPECT_DOUBLE_EQ(odom.tv_m_s, 0.3);
   EXPECT_DOUBLE_EQ(odom.rv_rad_s, 0.1);
   // theta = pi/2: the body x axis points along odom +y.
-  EXPECT_TRUE((odom.odometry.T_odom_body.linear() * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
+  EXPECT_TRUE(
+      (odom.odometry.T_odom_body.linear() * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
 
   ASSERT_TRUE(reader.Next().has_value());
   EXPECT_FALSE(reader.Next().has_value());

@@ -81,8 +81,9 @@ TEST(DatasetLimits, ImuClockJumpIsAnErrorNotAGapToIntegrate) {
   WriteDataset(folder, ImuRows(10, 0.0, "1000000.05 0 0 9.81 0 0 0\n"));
   const std::string jump = ReadError(folder);
   EXPECT_TRUE(Has(jump, "imu.csv:12: time jumps 1000000.00"));
-  EXPECT_TRUE(Has(jump, "s ahead (1000000.05 s after 0.045 s), more than the 1 s a sample may follow the previous one: "
-                        "a clock jump or lost data"));
+  EXPECT_TRUE(Has(jump,
+                  "s ahead (1000000.05 s after 0.045 s), more than the 1 s a sample may follow the previous one: "
+                  "a clock jump or lost data"));
   // A 0.5 s gap is lost data the filter bridges (counted there), not a reader error.
   WriteDataset(folder, ImuRows(10, 0.0, "0.545 0 0 9.81 0 0 0\n"));
   EXPECT_EQ(ReadError(folder), "");
@@ -120,8 +121,9 @@ TEST(DatasetLimits, ScanStepAndDurationNameTheRecord) {
     writer.Finish();
   }
   EXPECT_TRUE(Has(ReadError(folder), "scans.bin: record 3 (byte "));
-  EXPECT_TRUE(Has(ReadError(folder), "s ahead (the scan ends at 1000000.1 s, the previous one at 0.2 s), more than "
-                                     "the 60 s a scan may follow the previous one"));
+  EXPECT_TRUE(Has(ReadError(folder),
+                  "s ahead (the scan ends at 1000000.1 s, the previous one at 0.2 s), more than "
+                  "the 60 s a scan may follow the previous one"));
   {
     DatasetWriter writer(folder.path(), DatasetMetadata{});
     writer.WriteScan(raw(0.0, 100.0));

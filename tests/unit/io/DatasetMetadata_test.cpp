@@ -54,13 +54,11 @@ void ExpectSame(const DatasetMetadata& a, const DatasetMetadata& b) {
   EXPECT_EQ(a.payload, b.payload);
   EXPECT_EQ(a.scenario, b.scenario);
   EXPECT_EQ(a.seed, b.seed);
-  for (auto field : {&DatasetMetadata::duration_s, &DatasetMetadata::imu_rate_hz,
-                     &DatasetMetadata::encoder_rate_hz, &DatasetMetadata::scan_rate_hz,
-                     &DatasetMetadata::gravity_m_s2, &DatasetMetadata::sigma_accel_m_s2,
-                     &DatasetMetadata::sigma_gyro_rad_s,
-                     &DatasetMetadata::accel_bias_walk_m_s2_sqrt_s,
-                     &DatasetMetadata::gyro_bias_walk_rad_s_sqrt_s,
-                     &DatasetMetadata::range_noise_m, &DatasetMetadata::encoder_resolution_rad}) {
+  for (auto field : {&DatasetMetadata::duration_s, &DatasetMetadata::imu_rate_hz, &DatasetMetadata::encoder_rate_hz,
+                     &DatasetMetadata::scan_rate_hz, &DatasetMetadata::gravity_m_s2, &DatasetMetadata::sigma_accel_m_s2,
+                     &DatasetMetadata::sigma_gyro_rad_s, &DatasetMetadata::accel_bias_walk_m_s2_sqrt_s,
+                     &DatasetMetadata::gyro_bias_walk_rad_s_sqrt_s, &DatasetMetadata::range_noise_m,
+                     &DatasetMetadata::encoder_resolution_rad}) {
     EXPECT_TRUE(test::SameBits(a.*field, b.*field)) << a.*field << " vs " << b.*field;
   }
   EXPECT_EQ(a.payload_parameters, b.payload_parameters);
@@ -105,8 +103,7 @@ TEST(DatasetMetadata, PayloadParametersAreNestedMaps) {
   m.payload_parameters.Set("extrinsic.body_motor.enabled", true);
   SaveDatasetMetadata(m, folder / "metadata.yaml");
   const std::string text = test::ReadText(folder / "metadata.yaml");
-  EXPECT_NE(text.find("payload_parameters:\n  extrinsic:\n    body_motor:\n"), std::string::npos)
-      << text;
+  EXPECT_NE(text.find("payload_parameters:\n  extrinsic:\n    body_motor:\n"), std::string::npos) << text;
   EXPECT_NE(text.find("xyz_m: [1.0, 2.0, 3.0]"), std::string::npos) << text;
 }
 
@@ -121,8 +118,7 @@ TEST(DatasetMetadata, AValueThatIsAlsoAGroupCannotBeSaved) {
 
 TEST(DatasetMetadata, UnknownKeyNamesFileLineAndKey) {
   test::ScratchFolder folder;
-  const ConfigError e =
-      LoadError(folder, "format_version: 1\npayload: \"fixed_3d\"\nimu_rate: 200\n");
+  const ConfigError e = LoadError(folder, "format_version: 1\npayload: \"fixed_3d\"\nimu_rate: 200\n");
   EXPECT_EQ(e.line(), 3);
   EXPECT_EQ(e.key(), "imu_rate");
   EXPECT_NE(e.file().find("metadata.yaml"), std::string::npos);
@@ -138,27 +134,24 @@ TEST(DatasetMetadata, NewerFormatVersionIsRefusedBeforeItsUnknownKeys) {
 
 TEST(DatasetMetadata, BadValuesNameTheirKeyAndLine) {
   test::ScratchFolder folder;
-  EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\nimu_rate_hz: fast\n").key(),
-            "imu_rate_hz");
+  EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\nimu_rate_hz: fast\n").key(), "imu_rate_hz");
   EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\nseed: -1\n").key(), "seed");
   EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\nduration_s: \"5\"\n").line(), 3);
   EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\nseed: 1\nseed: 2\n").line(), 4);
   EXPECT_EQ(LoadError(folder, "format_version: 1\n").key(), "payload");
   EXPECT_EQ(LoadError(folder, "payload: x\n").key(), "format_version");
   EXPECT_EQ(LoadError(folder, "format_version: one\npayload: x\n").key(), "format_version");
-  const ConfigError list = LoadError(
-      folder, "format_version: 1\npayload: x\npayload_parameters:\n  a:\n    b: [1, x]\n");
+  const ConfigError list =
+      LoadError(folder, "format_version: 1\npayload: x\npayload_parameters:\n  a:\n    b: [1, x]\n");
   EXPECT_EQ(list.key(), "a.b");
   EXPECT_EQ(list.line(), 5);
-  EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\npayload_parameters:\n  a:\n").key(),
-            "a");
+  EXPECT_EQ(LoadError(folder, "format_version: 1\npayload: x\npayload_parameters:\n  a:\n").key(), "a");
   EXPECT_GT(LoadError(folder, "format_version: 1\npayload: [x\n").line(), 0);
 }
 
 TEST(DatasetMetadata, YamlAliasCyclesAreErrorsNotEndlessRecursion) {
   test::ScratchFolder folder;
-  const ConfigError direct =
-      LoadError(folder, "format_version: 1\npayload: x\npayload_parameters: &a\n  g: *a\n");
+  const ConfigError direct = LoadError(folder, "format_version: 1\npayload: x\npayload_parameters: &a\n  g: *a\n");
   EXPECT_EQ(direct.key(), "g");
   EXPECT_EQ(direct.line(), 4);
   EXPECT_NE(direct.reason().find("a cycle"), std::string::npos) << direct.what();

@@ -187,14 +187,11 @@ TEST(DatasetReader, MalformedImuLineNamesFileAndLine) {
   EXPECT_NE(error.find("imu.csv:4: field 2"), std::string::npos) << error;
 
   test::WriteText(folder / "imu.csv", "# header\n1 2 3 4 5 6 7\n\n2 2 3 4 5 6\n");
-  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:4: expected 7 numbers, found 6"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:4: expected 7 numbers, found 6"), std::string::npos);
   test::WriteText(folder / "imu.csv", "2 0 0 0 0 0 0\n1 0 0 0 0 0 0\n");
-  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:2: time goes backwards"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:2: time goes backwards"), std::string::npos);
   test::WriteText(folder / "imu.csv", "nan 0 0 0 0 0 0\n");
-  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:1: time nan is not finite"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { ReadAll(folder.path()); }).find("imu.csv:1: time nan is not finite"), std::string::npos);
 }
 
 TEST(DatasetReader, NonUnitQuaternionNamesFileAndLine) {

@@ -5,8 +5,8 @@
 #include <variant>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "IoTestSupport.hpp"
 #include "io/DatasetReader.hpp"
@@ -24,9 +24,8 @@ namespace unimap::io::test {
 constexpr double kRotationRoundTrip = 16 * std::numeric_limits<double>::epsilon();
 
 inline Eigen::Isometry3d RandomPose(ValueSource& v) {
-  const Eigen::Quaterniond q = Eigen::Quaterniond(v.Uniform(-1, 1), v.Uniform(-1, 1),
-                                                  v.Uniform(-1, 1), v.Uniform(-1, 1))
-                                   .normalized();
+  const Eigen::Quaterniond q =
+      Eigen::Quaterniond(v.Uniform(-1, 1), v.Uniform(-1, 1), v.Uniform(-1, 1), v.Uniform(-1, 1)).normalized();
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = q.toRotationMatrix();
   T.translation() = Eigen::Vector3d(v.Finite(), v.Finite(), v.Finite());
@@ -77,13 +76,11 @@ inline void ExpectSameBits(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 }
 
 // Time and position bit-exact; rotation through the quaternion text.
-inline void ExpectSamePose(double ta, const Eigen::Isometry3d& a, double tb,
-                           const Eigen::Isometry3d& b) {
+inline void ExpectSamePose(double ta, const Eigen::Isometry3d& a, double tb, const Eigen::Isometry3d& b) {
   EXPECT_TRUE(SameBits(ta, tb));
   ExpectSameBits(a.translation(), b.translation());
   EXPECT_LE((a.linear() - b.linear()).cwiseAbs().maxCoeff(), kRotationRoundTrip);
-  EXPECT_LE((b.linear().transpose() * b.linear() - Eigen::Matrix3d::Identity()).norm(),
-            kRotationRoundTrip);
+  EXPECT_LE((b.linear().transpose() * b.linear() - Eigen::Matrix3d::Identity()).norm(), kRotationRoundTrip);
 }
 
 inline void ExpectSameImu(const ImuSample& a, const ImuSample& b) {
@@ -96,9 +93,8 @@ inline void ExpectSameScan(const ScanRecord& a, const ScanRecord& b) {
   ASSERT_EQ(a.index(), b.index());
   if (const auto* la = std::get_if<LineScan>(&a)) {
     const LineScan& lb = std::get<LineScan>(b);
-    for (auto f : {&LineScan::start_time_s, &LineScan::angle_min_rad,
-                   &LineScan::angle_increment_rad, &LineScan::time_increment_s,
-                   &LineScan::range_min_m, &LineScan::range_max_m}) {
+    for (auto f : {&LineScan::start_time_s, &LineScan::angle_min_rad, &LineScan::angle_increment_rad,
+                   &LineScan::time_increment_s, &LineScan::range_min_m, &LineScan::range_max_m}) {
       EXPECT_TRUE(SameBits(la->*f, lb.*f));
     }
     ASSERT_EQ(la->ranges_m.size(), lb.ranges_m.size());

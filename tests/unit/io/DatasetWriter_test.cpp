@@ -57,29 +57,23 @@ TEST(DatasetWriter, EachStreamGoingBackwardsIsRejectedNamingTheStream) {
   DatasetWriter writer(folder.path(), Meta());
   writer.WriteImu(Imu(2.0));
   writer.WriteImu(Imu(2.0));  // equal times are fine
-  EXPECT_NE(ErrorOf([&] { writer.WriteImu(Imu(1.0)); }).find("imu.csv: time goes backwards"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteImu(Imu(1.0)); }).find("imu.csv: time goes backwards"), std::string::npos);
   writer.WriteEncoder({5.0, 0.0});
-  EXPECT_NE(ErrorOf([&] { writer.WriteEncoder({4.0, 0.0}); }).find("encoder.csv"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteEncoder({4.0, 0.0}); }).find("encoder.csv"), std::string::npos);
   OdometrySample odometry;
   odometry.time_s = 3.0;
   writer.WriteOdometry(odometry);
   odometry.time_s = 2.5;
-  EXPECT_NE(ErrorOf([&] { writer.WriteOdometry(odometry); }).find("odometry.csv"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteOdometry(odometry); }).find("odometry.csv"), std::string::npos);
   writer.WriteScan(Raw(0.5, 1.0));
   // Scans are ordered by their end time: this one starts later but ends earlier.
-  EXPECT_NE(ErrorOf([&] { writer.WriteScan(Raw(0.8, 0.9)); }).find("scans.bin"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteScan(Raw(0.8, 0.9)); }).find("scans.bin"), std::string::npos);
   StampedPose truth;
   truth.time_s = 1.0;
   writer.WriteGroundTruth(truth);
   truth.time_s = 0.0;
-  EXPECT_NE(ErrorOf([&] { writer.WriteGroundTruth(truth); }).find("groundtruth.tum"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf([&] { writer.WriteImu(Imu(std::nan(""))); }).find("not finite"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteGroundTruth(truth); }).find("groundtruth.tum"), std::string::npos);
+  EXPECT_NE(ErrorOf([&] { writer.WriteImu(Imu(std::nan(""))); }).find("not finite"), std::string::npos);
   writer.WriteImu(Imu(3.0));  // the writer is still usable; rejected items were not written
   writer.Finish();
 
@@ -96,7 +90,7 @@ TEST(DatasetWriter, MalformedItemsAreRejected) {
   LineScan line;
   line.ranges_m = {1.0f, 2.0f};
   line.intensities = {1.0f};
-  EXPECT_THROW(writer.WriteScan(line), InputError);  // intensities: none or one per beam
+  EXPECT_THROW(writer.WriteScan(line), InputError);           // intensities: none or one per beam
   EXPECT_THROW(writer.WriteScan(Raw(2.0, 1.0)), InputError);  // ends before it starts
   EXPECT_THROW(writer.WriteScan(Raw(std::nan(""), 1.0)), InputError);
   OdometrySample odometry;
@@ -117,9 +111,8 @@ TEST(DatasetWriter, UnfinishedWriterLeavesNothing) {
     writer.WriteScan(Raw(0.0, 0.1));
     writer.WriteGroundTruth(StampedPose{});
     EXPECT_EQ(FilesIn(folder.path()),
-              (std::set<std::string>{"imu.csv.partial", "encoder.csv.partial",
-                                     "odometry.csv.partial", "scans.bin.partial",
-                                     "groundtruth.tum.partial"}));
+              (std::set<std::string>{"imu.csv.partial", "encoder.csv.partial", "odometry.csv.partial",
+                                     "scans.bin.partial", "groundtruth.tum.partial"}));
   }  // destroyed without Finish() (an error, a full disk): the .partial files go too
   EXPECT_EQ(FilesIn(folder.path()), std::set<std::string>{});
   try {
@@ -136,8 +129,7 @@ TEST(DatasetWriter, FinishWritesTheStreamsGivenThenMetadataAndRefusesMore) {
   writer.WriteImu(Imu(1.0));
   writer.WriteScan(Raw(0.9, 1.0));
   writer.Finish();
-  EXPECT_EQ(FilesIn(folder.path()),
-            (std::set<std::string>{"imu.csv", "scans.bin", "metadata.yaml"}));
+  EXPECT_EQ(FilesIn(folder.path()), (std::set<std::string>{"imu.csv", "scans.bin", "metadata.yaml"}));
   EXPECT_THROW(writer.WriteImu(Imu(2.0)), InputError);
   EXPECT_THROW(writer.Finish(), InputError);
   const std::string imu = test::ReadText(folder / "imu.csv");
@@ -145,7 +137,7 @@ TEST(DatasetWriter, FinishWritesTheStreamsGivenThenMetadataAndRefusesMore) {
   const std::string scans = test::ReadText(folder / "scans.bin");
   ASSERT_GE(scans.size(), 17u);
   EXPECT_EQ(scans.substr(0, 12), std::string("UNIMAPSC\x01\x00\x00\x00", 12));
-  EXPECT_EQ(scans[12], '\x02');  // RawScan
+  EXPECT_EQ(scans[12], '\x02');             // RawScan
   EXPECT_EQ(scans.size(), 12u + 5u + 21u);  // header, record header, empty RawScan payload
 }
 

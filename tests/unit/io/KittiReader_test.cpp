@@ -24,8 +24,9 @@ namespace fs = std::filesystem;
 
 const fs::path kKitti = fs::path(UNIMAP_SHARED_DATA_DIR) / "kitti00";
 
-#define SKIP_WITHOUT_KITTI()                                                                              \
-  if (!fs::exists(kKitti / "000000.pcd")) GTEST_SKIP() << "real data absent: " << kKitti << " (../shared/data not present)"; \
+#define SKIP_WITHOUT_KITTI()                                                           \
+  if (!fs::exists(kKitti / "000000.pcd"))                                              \
+    GTEST_SKIP() << "real data absent: " << kKitti << " (../shared/data not present)"; \
   if (!PcdSupported()) GTEST_SKIP() << "built without PCL: .pcd scans unsupported"
 
 void WriteBin(const fs::path& file, const std::vector<float>& xyzi) {

@@ -22,10 +22,10 @@ using test::ScratchFolder;
 StampedPose Pose(double time_s, const Eigen::Vector3d& t, double roll, double pitch, double yaw) {
   StampedPose pose;
   pose.time_s = time_s;
-  pose.T_map_body.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-                              Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-                              Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-                                 .toRotationMatrix();
+  pose.T_map_body.linear() =
+      (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   pose.T_map_body.translation() = t;
   return pose;
 }

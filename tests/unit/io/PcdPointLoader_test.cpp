@@ -42,8 +42,8 @@ std::string LoadError(const std::filesystem::path& file) {
 
 TEST(PcdPointLoader, AsciiPointsWithAndWithoutIntensity) {
   ScratchFolder folder;
-  test::WriteText(folder / "a.pcd", PlainHeader("x y z intensity", "4 4 4 4", "F F F F", 2, "ascii") +
-                                        "1 2 3 0.5\n-1e3 nan 4 7\n");
+  test::WriteText(folder / "a.pcd",
+                  PlainHeader("x y z intensity", "4 4 4 4", "F F F F", 2, "ascii") + "1 2 3 0.5\n-1e3 nan 4 7\n");
   std::vector<Eigen::Vector4f> xyzi;
   LoadPcdXyzi(folder / "a.pcd", &xyzi);
   ASSERT_EQ(xyzi.size(), 2u);
@@ -59,8 +59,7 @@ TEST(PcdPointLoader, AsciiPointsWithAndWithoutIntensity) {
 TEST(PcdPointLoader, AsciiTextLineNamesItsLine) {
   ScratchFolder folder;
   // Line 9 (after the 8 header lines) holds a word: before, PCL read it as a point at the origin.
-  test::WriteText(folder / "t.pcd",
-                  PlainHeader("x y z", "4 4 4", "F F F", 2, "ascii") + "1 2 3\nhello world again\n");
+  test::WriteText(folder / "t.pcd", PlainHeader("x y z", "4 4 4", "F F F", 2, "ascii") + "1 2 3\nhello world again\n");
   EXPECT_TRUE(Has(LoadError(folder / "t.pcd"), "t.pcd:10: value 1 'hello' is not a number"));
   test::WriteText(folder / "s.pcd", PlainHeader("x y z", "4 4 4", "F F F", 1, "ascii") + "1 2\n");
   EXPECT_TRUE(Has(LoadError(folder / "s.pcd"), "s.pcd:9: a point needs 3 values, found 2"));
@@ -79,8 +78,8 @@ TEST(PcdPointLoader, AsciiPointCountMustMatchTheHeader) {
 TEST(PcdPointLoader, HugePointCountsAreRefusedBeforeAllocating) {
   ScratchFolder folder;
   // 2^31 - 1 points of 16 bytes in a file of a few hundred bytes: PCL allocated 32 GiB and threw bad_alloc.
-  test::WriteText(folder / "huge.pcd", PlainHeader("x y z intensity", "4 4 4 4", "F F F F", 2147483647, "binary") +
-                                           std::string(64, '\0'));
+  test::WriteText(folder / "huge.pcd",
+                  PlainHeader("x y z intensity", "4 4 4 4", "F F F F", 2147483647, "binary") + std::string(64, '\0'));
   EXPECT_TRUE(Has(LoadError(folder / "huge.pcd"),
                   "the header announces 2147483647 points of 16 bytes (34359738352 bytes), only 64 bytes follow"));
   test::WriteText(folder / "ascii.pcd", PlainHeader("x y z", "4 4 4", "F F F", 300000000, "ascii") + "1 2 3\n");
@@ -103,7 +102,7 @@ TEST(PcdPointLoader, BinaryFieldsOfAnyTypeAndOrder) {
   std::string body;
   const auto put = [&body](const auto& value) { body.append(reinterpret_cast<const char*>(&value), sizeof(value)); };
   for (int i = 0; i < 3; ++i) {
-    put(std::uint8_t{7});                     // rgb-like byte before x
+    put(std::uint8_t{7});                      // rgb-like byte before x
     put(static_cast<double>(i) + 0.25);        // x: F8
     put(static_cast<float>(-i));               // y: F4
     put(static_cast<std::int16_t>(-300 * i));  // z: I2
@@ -128,7 +127,8 @@ TEST(PcdPointLoader, MalformedHeadersNameTheLine) {
   EXPECT_TRUE(Has(header_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 2\nHEIGHT 1\nPOINTS 3\nDATA ascii\n"),
                   "h.pcd:7: POINTS 3 is not WIDTH x HEIGHT = 2"));
   EXPECT_TRUE(Has(header_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nDATA zip\n"), "h.pcd:5: DATA 'zip'"));
-  EXPECT_TRUE(Has(header_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\n"), "the header ends without a DATA line"));
+  EXPECT_TRUE(
+      Has(header_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\n"), "the header ends without a DATA line"));
   EXPECT_TRUE(Has(header_error("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH -1\nDATA ascii\n"),
                   "h.pcd:4: WIDTH '-1' is not a whole number"));
   EXPECT_TRUE(Has(header_error("hello\n"), "h.pcd:1: unknown header line 'hello'"));

@@ -39,8 +39,11 @@ std::vector<Eigen::Vector3f> FinitePoints(std::size_t n, std::uint32_t seed) {
 std::string ExpectedHeader(std::size_t n, const std::string& data) {
   const std::string count = std::to_string(n);
   return "# .PCD v0.7 - Point Cloud Data file format (written by unimap)\nVERSION 0.7\nFIELDS x y z\n"
-         "SIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " + count + "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\n"
-         "POINTS " + count + "\nDATA " + data + "\n";
+         "SIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " +
+         count +
+         "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\n"
+         "POINTS " +
+         count + "\nDATA " + data + "\n";
 }
 
 // The points of a binary file written by WritePcdXyz, parsed by hand
@@ -65,8 +68,8 @@ void ExpectSamePoints(const std::vector<Eigen::Vector3f>& expected, const std::v
   ASSERT_EQ(expected.size(), actual.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     for (int j = 0; j < 3; ++j) {
-      ASSERT_TRUE(SameBits(expected[i][j], actual[i][j])) << "point " << i << " axis " << j << ": "
-                                                          << expected[i][j] << " vs " << actual[i][j];
+      ASSERT_TRUE(SameBits(expected[i][j], actual[i][j]))
+          << "point " << i << " axis " << j << ": " << expected[i][j] << " vs " << actual[i][j];
     }
   }
 }

@@ -80,8 +80,9 @@ TEST(PlyReader, BinaryBothByteOrdersAndEveryScalarType) {
 
 TEST(PlyReader, NonFiniteValuesAreKept) {
   ScratchFolder dir;
-  WriteText(dir / "n.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                           "property float z\nend_header\nnan inf 1\n");
+  WriteText(dir / "n.ply",
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+            "property float z\nend_header\nnan inf 1\n");
   const std::vector<Eigen::Vector3f> points = ReadPlyVertices(dir / "n.ply");
   ASSERT_EQ(points.size(), 1u);
   EXPECT_TRUE(std::isnan(points[0].x()));
@@ -99,20 +100,23 @@ TEST(PlyReader, BadFilesAreInputErrorsNamingTheFile) {
   ExpectError(write("not.ply", "pcd\n"), "not a PLY file");
   ExpectError(write("fmt.ply", "ply\nformat binary_middle_endian 1.0\nelement vertex 0\n" + xyz + "end_header\n"),
               "unsupported PLY format");
-  ExpectError(write("noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                               "end_header\n1 2\n"),
+  ExpectError(write("noz.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                    "end_header\n1 2\n"),
               "no property z");
-  ExpectError(write("face.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int i\n"
-                                "element vertex 1\n" + xyz + "end_header\n"),
+  ExpectError(write("face.ply",
+                    "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int i\n"
+                    "element vertex 1\n" +
+                        xyz + "end_header\n"),
               "before the vertex element");
-  ExpectError(write("list.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz +
-                                "property list uchar int i\nend_header\n"),
-              "list property");
+  ExpectError(
+      write("list.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "property list uchar int i\nend_header\n"),
+      "list property");
   ExpectError(write("count.ply", "ply\nformat ascii 1.0\nelement vertex -1\n" + xyz + "end_header\n"),
               "bad PLY vertex element");
   ExpectError(write("noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz), "no end_header");
-  ExpectError(write("short.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\n" + xyz +
-                                 "end_header\n" + std::string(20, '\0')),
+  ExpectError(write("short.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\n" + xyz + "end_header\n" +
+                                     std::string(20, '\0')),
               "ends after 1 of 2 vertices");
   ExpectError(write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz + "end_header\n1 2 3\n4 five 6\n"),
               "ascii.ply: 9: expected 3 numbers");

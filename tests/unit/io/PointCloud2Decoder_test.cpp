@@ -45,8 +45,10 @@ std::vector<CloudField> With(std::vector<CloudField> extra) {
 
 TEST(PointCloud2DecoderTest, SecondsAndNanosecondsFieldsGiveAbsoluteTimesAndRings) {
   // The layout of the Luminar clouds in the real bag.
-  const auto fields = With({{"intensity", 16, kFloat32, 1}, {"time_sec", 20, kUint32, 1},
-                            {"time_nsec", 24, kUint32, 1}, {"laser_id", 28, kUint16, 1}});
+  const auto fields = With({{"intensity", 16, kFloat32, 1},
+                            {"time_sec", 20, kUint32, 1},
+                            {"time_nsec", 24, kUint32, 1},
+                            {"laser_id", 28, kUint16, 1}});
   CloudBuilder cloud(32, false);
   const std::uint32_t secs[2] = {1583971569u, 1583971570u};
   const std::uint32_t nsecs[2] = {927540000u, 15299642u};

@@ -161,7 +161,8 @@ void WriteBz2Bag(const fs::path& file) {
     cloud.width = 4;
     cloud.point_step = 20;
     cloud.row_step = 80;
-    for (auto [name, offset, type] : {std::tuple{"x", 0u, 7}, {"y", 4u, 7}, {"z", 8u, 7}, {"time", 12u, 7}, {"ring", 16u, 4}}) {
+    for (auto [name, offset, type] :
+         {std::tuple{"x", 0u, 7}, {"y", 4u, 7}, {"z", 8u, 7}, {"time", 12u, 7}, {"ring", 16u, 4}}) {
       sensor_msgs::PointField field;
       field.name = name;
       field.offset = offset;

@@ -41,9 +41,7 @@ std::string ErrorReading(const test::ScratchFolder& folder, const std::string& b
   return {};
 }
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ScanFileReader, TruncatedRecordNamesTheRecord) {
   test::ScratchFolder folder;
@@ -51,8 +49,8 @@ TEST(ScanFileReader, TruncatedRecordNamesTheRecord) {
   const std::size_t record = 5 + 21 + 3 * 38;
   // Cut inside the payload of record 3, then inside its 5-byte header.
   std::string error = ErrorReading(folder, bytes.substr(0, bytes.size() - 10));
-  EXPECT_TRUE(Contains(error, "scans.bin: record 3 (byte " + std::to_string(12 + 2 * record) +
-                                  "): truncated")) << error;
+  EXPECT_TRUE(Contains(error, "scans.bin: record 3 (byte " + std::to_string(12 + 2 * record) + "): truncated"))
+      << error;
   error = ErrorReading(folder, bytes.substr(0, 12 + 2 * record + 2));
   EXPECT_TRUE(Contains(error, "record 3") && Contains(error, "truncated")) << error;
 }
@@ -70,8 +68,7 @@ TEST(ScanFileReader, UnknownKindNamesTheRecord) {
   std::string bytes = FileWith({Raw(0, 1, 1), Raw(1, 2, 1)});
   bytes[12 + 5 + 21 + 38] = '\x07';
   const std::string error = ErrorReading(folder, bytes);
-  EXPECT_TRUE(Contains(error, "scans.bin: record 2") && Contains(error, "unknown record kind 7"))
-      << error;
+  EXPECT_TRUE(Contains(error, "scans.bin: record 2") && Contains(error, "unknown record kind 7")) << error;
 }
 
 TEST(ScanFileReader, InconsistentPayloadsAreRejected) {
@@ -103,8 +100,7 @@ TEST(ScanFileReader, BadHeadersAreRejected) {
   test::ScratchFolder folder;
   EXPECT_TRUE(Contains(ErrorReading(folder, "UNIMAP"), "too short"));
   EXPECT_TRUE(Contains(ErrorReading(folder, std::string("UNIMAPXX\x01\0\0\0", 12)), "magic"));
-  EXPECT_TRUE(Contains(ErrorReading(folder, std::string("UNIMAPSC\x02\0\0\0", 12)),
-                       "version 2 is not supported"));
+  EXPECT_TRUE(Contains(ErrorReading(folder, std::string("UNIMAPSC\x02\0\0\0", 12)), "version 2 is not supported"));
 }
 
 TEST(ScanFileReader, EmptyFileWithHeaderHasNoScans) {

@@ -17,7 +17,7 @@ TEST(TimeReorderBufferTest, ReleasesInTimeOrderOnceTheWindowHasPassed) {
   EXPECT_TRUE(buffer.Push(10.0, "a"));
   EXPECT_TRUE(buffer.Push(10.6, "c"));
   drain(false);
-  EXPECT_TRUE(out.empty());  // nothing is 1 s older than the newest (10.6) yet
+  EXPECT_TRUE(out.empty());             // nothing is 1 s older than the newest (10.6) yet
   EXPECT_TRUE(buffer.Push(10.3, "b"));  // late, within the window
   EXPECT_TRUE(buffer.Push(11.5, "d"));
   drain(false);

@@ -62,16 +62,12 @@ TEST(TumTrajectory, ReadsCommentsBlankLinesAndQuaternionOrderXyzw) {
 
 TEST(TumTrajectory, BadLinesNameFileAndLine) {
   test::ScratchFolder folder;
-  auto has = [](const std::string& error, const std::string& part) {
-    return error.find(part) != std::string::npos;
-  };
-  EXPECT_TRUE(has(ReadError(folder, "# h\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n"),
-                  "t.tum:3: expected 8 numbers, found 7"));
+  auto has = [](const std::string& error, const std::string& part) { return error.find(part) != std::string::npos; };
+  EXPECT_TRUE(has(ReadError(folder, "# h\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 1\n"), "t.tum:3: expected 8 numbers, found 7"));
   EXPECT_TRUE(has(ReadError(folder, "1 0 0 0 0 0 0 1 9\n"), "t.tum:1: expected 8 numbers, found more"));
   EXPECT_TRUE(has(ReadError(folder, "1 0 0 zero 0 0 0 1\n"), "t.tum:1: field 4 'zero'"));
   EXPECT_TRUE(has(ReadError(folder, "1 0 0 0 0 0 0 1.01\n"), "t.tum:1: quaternion"));
-  EXPECT_TRUE(has(ReadError(folder, "1 0 0 0 0 0 0 1\n0.5 0 0 0 0 0 0 1\n"),
-                  "t.tum:2: time goes backwards"));
+  EXPECT_TRUE(has(ReadError(folder, "1 0 0 0 0 0 0 1\n0.5 0 0 0 0 0 0 1\n"), "t.tum:2: time goes backwards"));
   EXPECT_TRUE(has(ReadError(folder, "1 inf 0 0 0 0 0 1\n"), "t.tum:1: field 2 is not finite"));
   EXPECT_TRUE(has(ReadError(folder, "1 0 0 0 nan 0 0 1\n"), "t.tum:1: field 5 is not finite"));
   EXPECT_THROW(ReadTumTrajectory(folder / "missing.tum"), InputError);

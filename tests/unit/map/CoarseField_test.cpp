@@ -20,7 +20,8 @@ DistanceField TwoSurfaceCells() {
     for (int y = 0; y < dims.y(); ++y) {
       for (int z = 0; z < dims.z(); ++z) {
         float best = 1e9f;
-        for (const Eigen::Vector3i& s : surface) best = std::min(best, 0.1f * (Eigen::Vector3i(x, y, z) - s).cast<float>().norm());
+        for (const Eigen::Vector3i& s : surface)
+          best = std::min(best, 0.1f * (Eigen::Vector3i(x, y, z) - s).cast<float>().norm());
         cells.push_back(DistanceField::Quantise(best, 0.5f));
       }
     }

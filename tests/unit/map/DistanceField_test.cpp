@@ -52,8 +52,8 @@ TEST(DistanceField, LookupReturnsTheValueOfTheVoxelContainingThePoint) {
   EXPECT_EQ(field.CellCount(), 60u);
   // One block of codes and the block table's one entry.
   EXPECT_EQ(field.StoredBlocks(), 1u);
-  EXPECT_EQ(field.MemoryBytes(), DistanceField::kBlockCells * sizeof(std::uint16_t) +
-                                     sizeof(std::shared_ptr<const DistanceField::Block>));
+  EXPECT_EQ(field.MemoryBytes(),
+            DistanceField::kBlockCells * sizeof(std::uint16_t) + sizeof(std::shared_ptr<const DistanceField::Block>));
   EXPECT_TRUE(field.box_max().isApprox(V3(0.5f, 2.0f, 4.5f)));
 }
 
@@ -77,8 +77,7 @@ TEST(DistanceField, QuantisationIsExactToOneStepAndSaturatesAtTheClamp) {
   EXPECT_EQ(DistanceField::Quantise(-0.5f, 1.0f), 0u);
   EXPECT_EQ(DistanceField::Quantise(1.0f, 1.0f), DistanceField::kMaxSteps);
   EXPECT_EQ(DistanceField::Quantise(7.0f, 1.0f), DistanceField::kMaxSteps);
-  EXPECT_EQ(DistanceField::Quantise(std::numeric_limits<float>::quiet_NaN(), 1.0f),
-            DistanceField::kMaxSteps);
+  EXPECT_EQ(DistanceField::Quantise(std::numeric_limits<float>::quiet_NaN(), 1.0f), DistanceField::kMaxSteps);
   EXPECT_EQ(DistanceField::Quantise(0.5f, 1.0f), 32768u);  // round(32767.5)
 }
 
@@ -95,8 +94,7 @@ TEST(DistanceField, TrilinearInterpolationIsExactOnALinearField) {
   // Between the last centres and the box face, the missing neighbours count
   // as the clamp: 30 % clamp + 70 % the first layer along x.
   const V3 edge(-0.9f, 1.0f, 3.3f);
-  EXPECT_NEAR(field.DistanceTrilinear(edge, nullptr),
-              0.3f * kClamp + 0.7f * Linear(V3(-0.75f, 1.0f, 3.3f)), 1e-4f);
+  EXPECT_NEAR(field.DistanceTrilinear(edge, nullptr), 0.3f * kClamp + 0.7f * Linear(V3(-0.75f, 1.0f, 3.3f)), 1e-4f);
   V3 gradient = V3::Ones();
   EXPECT_FLOAT_EQ(field.DistanceTrilinear(V3(9.0f, 0.0f, 0.0f), &gradient), kClamp);
   EXPECT_TRUE(gradient.isZero());
@@ -116,8 +114,7 @@ DistanceField SignedField(float (*value)(const V3&)) {
       }
     }
   }
-  return DistanceField(kOrigin, kDims, 0.5f, kClamp, std::move(cells), 1,
-                       DistanceField::Encoding::kSigned);
+  return DistanceField(kOrigin, kDims, 0.5f, kClamp, std::move(cells), 1, DistanceField::Encoding::kSigned);
 }
 
 TEST(DistanceField, SignedQuantisationCoversPlusMinusTheClampIn15Bits) {
@@ -126,8 +123,7 @@ TEST(DistanceField, SignedQuantisationCoversPlusMinusTheClampIn15Bits) {
   EXPECT_EQ(DistanceField::QuantiseSigned(-kClamp, kClamp), 0u);
   EXPECT_EQ(DistanceField::QuantiseSigned(-9.0f, kClamp), 0u);
   EXPECT_EQ(DistanceField::QuantiseSigned(kClamp, kClamp), plus_clamp);
-  EXPECT_EQ(DistanceField::QuantiseSigned(std::numeric_limits<float>::quiet_NaN(), kClamp),
-            plus_clamp);
+  EXPECT_EQ(DistanceField::QuantiseSigned(std::numeric_limits<float>::quiet_NaN(), kClamp), plus_clamp);
   EXPECT_EQ(DistanceField::QuantiseSigned(0.0f, kClamp), 16384u << 1);  // round(16383.5)
   const DistanceField field = SignedField(Plane);
   EXPECT_EQ(field.encoding(), DistanceField::Encoding::kSigned);
@@ -144,14 +140,12 @@ TEST(DistanceField, SignedQuantisationCoversPlusMinusTheClampIn15Bits) {
 
 TEST(DistanceField, SignedTrilinearReadsZeroOnTheSurfaceBetweenCenters) {
   const DistanceField field = SignedField(Plane);
-  for (const V3& p : {V3(-0.6f, 0.4f, 3.1f), V3(0.1f, 1.6f, 2.9f), V3(-0.3f, 1.0f, 3.3f),
-                      V3(-0.3f, 1.1f, 3.6f)}) {
+  for (const V3& p : {V3(-0.6f, 0.4f, 3.1f), V3(0.1f, 1.6f, 2.9f), V3(-0.3f, 1.0f, 3.3f), V3(-0.3f, 1.1f, 3.6f)}) {
     V3 gradient;
     EXPECT_NEAR(field.DistanceTrilinear(p, &gradient), std::abs(Plane(p)), 1e-4f) << p.transpose();
     if (std::abs(Plane(p)) < 0.01f) continue;  // on it the gradient's sign is arbitrary
     // The gradient of |s|: away from the plane on both sides.
-    EXPECT_TRUE(gradient.isApprox(V3(0.0f, 0.0f, Plane(p) < 0.0f ? -1.0f : 1.0f), 1e-3f))
-        << gradient.transpose();
+    EXPECT_TRUE(gradient.isApprox(V3(0.0f, 0.0f, Plane(p) < 0.0f ? -1.0f : 1.0f), 1e-3f)) << gradient.transpose();
   }
   // Unsigned, the same distances cannot: between the centres on either
   // side (0.35 m below, 0.15 m above) the plane reads 0.35 + 0.7 (0.15 - 0.35).
@@ -256,18 +250,14 @@ TEST(DistanceField, TrilinearAcrossABlockBoundaryUsesBothBlocks) {
 }
 
 TEST(DistanceField, InconsistentConstructionIsAnInputError) {
-  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, kClamp, std::vector<std::uint16_t>(59), 0),
-               InputError);
-  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.0f, kClamp, std::vector<std::uint16_t>(60), 0),
-               InputError);
-  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, -1.0f, std::vector<std::uint16_t>(60), 0),
-               InputError);
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, kClamp, std::vector<std::uint16_t>(59), 0), InputError);
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.0f, kClamp, std::vector<std::uint16_t>(60), 0), InputError);
+  EXPECT_THROW(DistanceField(kOrigin, kDims, 0.5f, -1.0f, std::vector<std::uint16_t>(60), 0), InputError);
   EXPECT_THROW(DistanceField(std::numeric_limits<float>::infinity()), InputError);
   EXPECT_THROW(DistanceField(V3::Zero(), Eigen::Vector3i(2, 1, 1), 0.1f, 0.5f,
                              std::vector<std::shared_ptr<const DistanceField::Block>>(1), 0),
                InputError);
-  std::vector<std::shared_ptr<const DistanceField::Block>> short_block{
-      std::make_shared<DistanceField::Block>(10)};
+  std::vector<std::shared_ptr<const DistanceField::Block>> short_block{std::make_shared<DistanceField::Block>(10)};
   EXPECT_THROW(DistanceField(V3::Zero(), Eigen::Vector3i(1, 1, 1), 0.1f, 0.5f, short_block, 0), InputError);
 }
 

@@ -32,7 +32,8 @@ TEST(DistanceMapOptions, EachOutOfRangeFieldIsNamed) {
       {"prob_miss", [](DistanceMapOptions& o) { o.prob_miss = 0.6; }},
       {"occupancy_threshold", [](DistanceMapOptions& o) { o.occupancy_threshold = 0.99; }},
       {"clamp_min_probability", [](DistanceMapOptions& o) { o.clamp_min_probability = 0.0; }},
-      {"key range", [](DistanceMapOptions& o) {
+      {"key range",
+       [](DistanceMapOptions& o) {
          o.resolution_m = 0.001;
          o.max_range_m = 10.0;
          o.clamp_distance_m = 1.0;

@@ -1,9 +1,9 @@
 #include "map/DistanceMap.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <cmath>
 #include <future>
 #include <limits>
 #include <sstream>
@@ -44,11 +44,9 @@ DistanceMapOptions TestOptions() {
 // occupied voxels: exact at voxel centres (within half a voxel) and, at the
 // query point itself, off by no more than that plus the distance to the
 // voxel centre (the distance is 1-Lipschitz).
-void ExpectMatchesBruteForce(const DistanceMap& map, std::uint32_t seed, const V3& low,
-                             const V3& high) {
+void ExpectMatchesBruteForce(const DistanceMap& map, std::uint32_t seed, const V3& low, const V3& high) {
   const std::shared_ptr<const DistanceField> field = map.Snapshot();
-  const std::vector<V3> occupied =
-      test::CentersNear(map.OccupiedVoxelCenters(), low, high, field->clamp());
+  const std::vector<V3> occupied = test::CentersNear(map.OccupiedVoxelCenters(), low, high, field->clamp());
   ASSERT_FALSE(occupied.empty());
   const std::vector<V3> queries = RandomPoints(low, high, 2000, seed);
   EXPECT_LE(MaxVoxelCenterError(*field, occupied, queries), 0.5f * kRes);
@@ -184,8 +182,7 @@ void ExpectFreeSpaceRaysRemoveAVanishedObstacle(bool clear_occupied_only) {
   EXPECT_NEAR(map.Snapshot()->Distance(V3(1.5f, 0.1f, 0.1f)), 0.6f, 1e-3f);
 
   // The near wall is gone: returns now come from the far wall, through it.
-  const std::vector<V3> far_wall =
-      SampleRectangle(V3(4.1f, -3.9f, -3.9f), V3(0, 7.8f, 0), V3(0, 0, 7.8f), 0.1f);
+  const std::vector<V3> far_wall = SampleRectangle(V3(4.1f, -3.9f, -3.9f), V3(0, 7.8f, 0), V3(0, 0, 7.8f), 0.1f);
   for (int i = 0; i < 5; ++i) map.InsertScan(far_wall, sensor);
   map.WaitForUpdates();
   const std::shared_ptr<const DistanceField> field = map.Snapshot();
@@ -207,11 +204,10 @@ TEST(DistanceMap, FreeSpaceRaysRemoveAVanishedObstacleWithFullOctomapInsertion) 
 TEST(DistanceMap, QueriesOutsideTheBoxOrFarFromObstaclesReturnTheClamp) {
   DistanceMap map(TestOptions());
   EXPECT_FLOAT_EQ(map.Snapshot()->Distance(V3::Zero()), 1.0f);  // nothing inserted yet
-  map.InsertScan(SampleRectangle(V3(-2.9f, -2.9f, -0.9f), V3(5.8f, 0, 0), V3(0, 5.8f, 0), 0.1f),
-                 V3(0.1f, 0.1f, 0.1f));
+  map.InsertScan(SampleRectangle(V3(-2.9f, -2.9f, -0.9f), V3(5.8f, 0, 0), V3(0, 5.8f, 0), 0.1f), V3(0.1f, 0.1f, 0.1f));
   map.WaitForUpdates();
   const std::shared_ptr<const DistanceField> field = map.Snapshot();
-  EXPECT_FLOAT_EQ(field->Distance(V3(0.1f, 0.1f, 0.5f)), 1.0f);   // 1.4 m above the floor
+  EXPECT_FLOAT_EQ(field->Distance(V3(0.1f, 0.1f, 0.5f)), 1.0f);    // 1.4 m above the floor
   EXPECT_FLOAT_EQ(field->Distance(V3(50.0f, 0.0f, -0.9f)), 1.0f);  // outside the box
   EXPECT_FLOAT_EQ(field->Distance(V3(0.1f, 0.1f, -5.0f)), 1.0f);   // below the box
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -243,8 +239,7 @@ TEST(DistanceMap, LargeBoxesAreShrunkToTheCellBudget) {
   DistanceMapOptions options = TestOptions();
   options.max_edt_cells = 5000;
   DistanceMap map(options);
-  map.InsertScan(SampleBoxSurface(V3(-4.9f, -4.9f, -4.9f), V3(4.9f, 4.9f, 4.9f), 0.1f),
-                 V3(0.1f, 0.1f, 0.1f));
+  map.InsertScan(SampleBoxSurface(V3(-4.9f, -4.9f, -4.9f), V3(4.9f, 4.9f, 4.9f), 0.1f), V3(0.1f, 0.1f, 0.1f));
   map.WaitForUpdates();
   EXPECT_LE(map.Snapshot()->CellCount(), 5000u);
   EXPECT_GT(map.Snapshot()->CellCount(), 0u);
@@ -252,11 +247,8 @@ TEST(DistanceMap, LargeBoxesAreShrunkToTheCellBudget) {
   EXPECT_TRUE(map.Snapshot()->Contains(V3(0.1f, 0.1f, 0.1f)));
 }
 
-
 // Prior maps (for `unimap localize --map`): a floor plane at z = -0.9 m.
-std::vector<V3> Floor() {
-  return SampleRectangle(V3(-2.9f, -2.9f, -0.9f), V3(5.8f, 0, 0), V3(0, 5.8f, 0), 0.1f);
-}
+std::vector<V3> Floor() { return SampleRectangle(V3(-2.9f, -2.9f, -0.9f), V3(5.8f, 0, 0), V3(0, 5.8f, 0), 0.1f); }
 
 // Localisation in a fixed map moves only the sensor: inside the box nothing
 // can change, so the published field is kept (no re-export per scan); a move
@@ -289,8 +281,7 @@ TEST(DistanceMap, PriorMapFromPointsOctreeAndBtFile) {
 
   auto tree = std::make_unique<octomap::OcTree>(0.1);  // its resolution wins
   for (const V3& p : Floor()) tree->updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);
-  const std::filesystem::path bt =
-      std::filesystem::temp_directory_path() / "unimap_distance_map_test.bt";
+  const std::filesystem::path bt = std::filesystem::temp_directory_path() / "unimap_distance_map_test.bt";
   ASSERT_TRUE(tree->writeBinary(bt.string()));
   const auto loaded = DistanceMap::LoadBt(bt, TestOptions(), V3::Zero());
   std::filesystem::remove(bt);
@@ -312,8 +303,7 @@ TEST(DistanceMap, PriorMapFromPointsOctreeAndBtFile) {
 
 TEST(DistanceMap, UnreadableBtFilesAreInputErrors) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path();
-  EXPECT_THROW(DistanceMap::LoadBt(dir / "unimap_no_such_map.bt", TestOptions(), V3::Zero()),
-               InputError);
+  EXPECT_THROW(DistanceMap::LoadBt(dir / "unimap_no_such_map.bt", TestOptions(), V3::Zero()), InputError);
   const std::filesystem::path garbage = dir / "unimap_garbage_map.bt";
   std::ofstream(garbage) << "this is not an octree\n";
   EXPECT_THROW(DistanceMap::LoadBt(garbage, TestOptions(), V3::Zero()), InputError);

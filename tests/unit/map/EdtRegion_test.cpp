@@ -87,8 +87,7 @@ TEST_F(EdtRegionTest, IncrementalUpdateFollowsAddedAndFreedVoxels) {
   const std::shared_ptr<const DistanceField> field = region.Export(4);
   std::vector<V3> occupied = OccupiedCenters();
   EXPECT_EQ(occupied.size(), 33u - 2u + 2u);
-  occupied.erase(std::remove_if(occupied.begin(), occupied.end(),
-                                [](const V3& c) { return c.x() > 5.0f; }),
+  occupied.erase(std::remove_if(occupied.begin(), occupied.end(), [](const V3& c) { return c.x() > 5.0f; }),
                  occupied.end());
   EXPECT_LE(MaxCellError(*field, occupied), 0.05f);
   EXPECT_GT(field->Distance(freed), 0.0f);
@@ -110,7 +109,7 @@ TEST(EdtRegion, PlanesReachPastTheEdgeOfASurfaceSeenOnlyInPart) {
   tree.Insert(floor, V3(-0.5f, 0.0f, 1.0f));
   const KeyBox box(tree.KeyOf(V3(-1.5f, -1.5f, -0.8f)), tree.KeyOf(V3(1.5f, 1.5f, 0.8f)));
   const EdtRegion region(&tree.tree(), box, kClamp);
-  EXPECT_FALSE(region.Export(1)->HasPlanes());  // no surfaces, no planes
+  EXPECT_FALSE(region.Export(1)->HasPlanes());                   // no surfaces, no planes
   EXPECT_FALSE(region.Export(1, tree.surfaces())->HasPlanes());  // not asked for
   const std::shared_ptr<const DistanceField> field = region.Export(1, tree.surfaces(), /*with_planes=*/true);
   ASSERT_TRUE(field->HasPlanes());

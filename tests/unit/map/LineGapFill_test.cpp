@@ -28,13 +28,13 @@ std::vector<BeamReturn> WallLine(double psi_rad, float wall_x = 3.0f) {
 TEST(LineGapFillTest, FillsTheWallBetweenConsecutiveLinesOnTheWall) {
   LineGapFill fill(LineGapFillOptions{});
   EXPECT_TRUE(fill.Add(0.0, Eigen::Vector3f::Zero(), WallLine(0.0)).empty());  // first line: nothing to pair
-  const double step = 4.5 * kPi / 180.0;  // 30 rpm at 40 lines/s
+  const double step = 4.5 * kPi / 180.0;                                       // 30 rpm at 40 lines/s
   const std::vector<Eigen::Vector3f> filled = fill.Add(0.025, Eigen::Vector3f::Zero(), WallLine(step));
   // 21 beams, gaps of 0.24-0.25 m at 0.05 m steps: 4 points each.
   ASSERT_EQ(filled.size(), 21u * 4u);
   for (const Eigen::Vector3f& p : filled) {
-    EXPECT_NEAR(p.x(), 3.0f, 1e-5f);                           // on the wall
-    EXPECT_GT(p.y(), 0.0f);                                    // between the two lines
+    EXPECT_NEAR(p.x(), 3.0f, 1e-5f);  // on the wall
+    EXPECT_GT(p.y(), 0.0f);           // between the two lines
     EXPECT_LT(p.y(), 3.0 * std::tan(step));
   }
 }

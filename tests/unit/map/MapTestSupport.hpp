@@ -14,10 +14,8 @@ namespace unimap::map::test {
 
 // Points on the parallelogram corner + s * edge_u + t * edge_v, s, t in
 // [0, 1], spaced at most spacing_m apart.
-inline std::vector<Eigen::Vector3f> SampleRectangle(const Eigen::Vector3f& corner,
-                                                    const Eigen::Vector3f& edge_u,
-                                                    const Eigen::Vector3f& edge_v,
-                                                    float spacing_m) {
+inline std::vector<Eigen::Vector3f> SampleRectangle(const Eigen::Vector3f& corner, const Eigen::Vector3f& edge_u,
+                                                    const Eigen::Vector3f& edge_v, float spacing_m) {
   const int nu = std::max(1, static_cast<int>(std::ceil(edge_u.norm() / spacing_m)));
   const int nv = std::max(1, static_cast<int>(std::ceil(edge_v.norm() / spacing_m)));
   std::vector<Eigen::Vector3f> points;
@@ -31,8 +29,7 @@ inline std::vector<Eigen::Vector3f> SampleRectangle(const Eigen::Vector3f& corne
 }
 
 // Points on the six faces of the box [low, high].
-inline std::vector<Eigen::Vector3f> SampleBoxSurface(const Eigen::Vector3f& low,
-                                                     const Eigen::Vector3f& high,
+inline std::vector<Eigen::Vector3f> SampleBoxSurface(const Eigen::Vector3f& low, const Eigen::Vector3f& high,
                                                      float spacing_m) {
   std::vector<Eigen::Vector3f> points;
   const Eigen::Vector3f size = high - low;
@@ -58,8 +55,7 @@ inline void Append(std::vector<Eigen::Vector3f>* to, const std::vector<Eigen::Ve
 }
 
 // Distance from p to the nearest of centres, clamped at clamp_m.
-inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centers,
-                                const Eigen::Vector3f& p, float clamp_m) {
+inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centers, const Eigen::Vector3f& p, float clamp_m) {
   float best_sq = clamp_m * clamp_m;
   const float px = p.x();
   const float py = p.y();
@@ -74,8 +70,7 @@ inline float BruteForceDistance(const std::vector<Eigen::Vector3f>& centers,
 }
 
 // The centres that can lie within clamp_m of the box [low, high].
-inline std::vector<Eigen::Vector3f> CentersNear(const std::vector<Eigen::Vector3f>& centers,
-                                                const Eigen::Vector3f& low,
+inline std::vector<Eigen::Vector3f> CentersNear(const std::vector<Eigen::Vector3f>& centers, const Eigen::Vector3f& low,
                                                 const Eigen::Vector3f& high, float clamp_m) {
   std::vector<Eigen::Vector3f> near;
   for (const Eigen::Vector3f& c : centers) {
@@ -94,8 +89,7 @@ inline Eigen::Vector3f VoxelCenterOf(const DistanceField& field, const Eigen::Ve
 }
 
 // Uniform random points in [low, high].
-inline std::vector<Eigen::Vector3f> RandomPoints(const Eigen::Vector3f& low,
-                                                 const Eigen::Vector3f& high, int count,
+inline std::vector<Eigen::Vector3f> RandomPoints(const Eigen::Vector3f& low, const Eigen::Vector3f& high, int count,
                                                  std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -108,8 +102,7 @@ inline std::vector<Eigen::Vector3f> RandomPoints(const Eigen::Vector3f& low,
 
 // Largest |field - brute force| over queries, the brute force evaluated at
 // the centre of each query's voxel (what the field stores).
-inline float MaxVoxelCenterError(const DistanceField& field,
-                                 const std::vector<Eigen::Vector3f>& occupied_centers,
+inline float MaxVoxelCenterError(const DistanceField& field, const std::vector<Eigen::Vector3f>& occupied_centers,
                                  const std::vector<Eigen::Vector3f>& queries) {
   float worst = 0.0f;
   for (const Eigen::Vector3f& p : queries) {

@@ -67,9 +67,8 @@ TEST(NeighborhoodPlane, StripesOfAWallMakeItsPlaneOneStripeDoesNot) {
 }
 
 TEST(NeighborhoodPlane, ACornerIsNotAPlane) {
-  const DistanceField corner = FieldOf([](const Eigen::Vector3f& c) {
-    return std::abs(c.x() - 0.05f) < 1e-3f || std::abs(c.y() - 0.05f) < 1e-3f;
-  });
+  const DistanceField corner = FieldOf(
+      [](const Eigen::Vector3f& c) { return std::abs(c.x() - 0.05f) < 1e-3f || std::abs(c.y() - 0.05f) < 1e-3f; });
   EXPECT_EQ(FitNeighborhoodPlane(corner, Eigen::Vector3f(0.05f, 0.05f, 0.0f), {}).shape,
             NeighborhoodShape::kVolumetric);
 }
@@ -79,10 +78,8 @@ TEST(NeighborhoodPlane, TooFewSurfaceCellsOrNoFieldGiveNoPlane) {
   const DistanceField sparse = FieldOf([](const Eigen::Vector3f& c) {
     return std::abs(c.y() - 0.05f) < 1e-3f && std::abs(c.z() - 0.05f) < 1e-3f && std::abs(c.x() - 0.05f) < 0.11f;
   });
-  EXPECT_EQ(FitNeighborhoodPlane(sparse, Eigen::Vector3f(0.05f, 0.05f, 0.05f), {}).shape,
-            NeighborhoodShape::kTooFew);
-  EXPECT_EQ(FitNeighborhoodPlane(DistanceField(kClamp), Eigen::Vector3f::Zero(), {}).shape,
-            NeighborhoodShape::kTooFew);
+  EXPECT_EQ(FitNeighborhoodPlane(sparse, Eigen::Vector3f(0.05f, 0.05f, 0.05f), {}).shape, NeighborhoodShape::kTooFew);
+  EXPECT_EQ(FitNeighborhoodPlane(DistanceField(kClamp), Eigen::Vector3f::Zero(), {}).shape, NeighborhoodShape::kTooFew);
   const DistanceField floor = FieldOf([](const Eigen::Vector3f& c) { return std::abs(c.z() - 0.05f) < 1e-3f; });
   EXPECT_EQ(FitNeighborhoodPlane(floor, Eigen::Vector3f(NAN, 0.0f, 0.0f), {}).shape, NeighborhoodShape::kTooFew);
   // Far outside the grid: nothing around.

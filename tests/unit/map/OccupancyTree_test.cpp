@@ -26,9 +26,9 @@ bool IsOccupied(const OccupancyTree& tree, const V3& p) {
 TEST(OccupancyTree, HitsWithinRangeAreOccupiedAndBoxed) {
   OccupancyTree tree(Options());
   const V3 origin(0.05f, 0.05f, 0.05f);
-  const KeyBox hits = tree.Insert({V3(3.05f, 0.05f, 0.05f), V3(0.05f, -2.05f, 1.05f),
-                                   V3(20.05f, 0.05f, 0.05f)},  // beyond 10 m: a miss ray only
-                                  origin);
+  const KeyBox hits = tree.Insert(
+      {V3(3.05f, 0.05f, 0.05f), V3(0.05f, -2.05f, 1.05f), V3(20.05f, 0.05f, 0.05f)},  // beyond 10 m: a miss ray only
+      origin);
   EXPECT_EQ(hits, KeyBox(tree.KeyOf(V3(0.05f, -2.05f, 0.05f)), tree.KeyOf(V3(3.05f, 0.05f, 1.05f))));
   EXPECT_TRUE(IsOccupied(tree, V3(3.05f, 0.05f, 0.05f)));
   EXPECT_TRUE(IsOccupied(tree, V3(0.05f, -2.05f, 1.05f)));

@@ -62,8 +62,14 @@ void ExpectSameVisits(int occupied, int min_visits) {
     const Eigen::Vector3d origin(origin_coordinate(rng), origin_coordinate(rng), origin_coordinate(rng));
     const Eigen::Vector3i end = voxels[static_cast<std::size_t>(pick(rng))];
     std::vector<Eigen::Vector3i> a, b;
-    WalkRay(origin, end, skipping, [&](const Eigen::Vector3i& v) { a.push_back(v); return false; });
-    WalkRay(origin, end, every_voxel, [&](const Eigen::Vector3i& v) { b.push_back(v); return false; });
+    WalkRay(origin, end, skipping, [&](const Eigen::Vector3i& v) {
+      a.push_back(v);
+      return false;
+    });
+    WalkRay(origin, end, every_voxel, [&](const Eigen::Vector3i& v) {
+      b.push_back(v);
+      return false;
+    });
     ASSERT_EQ(a, b) << "ray " << ray;
     visits += static_cast<int>(a.size());
   }
@@ -85,7 +91,8 @@ TEST(RayWalk, QuarterMaskMarksTheQuartersHoldingAVoxel) {
   set(0, 0, 0);
   EXPECT_EQ(QuarterMask(mask), 1u << QuarterIndex(Eigen::Vector3i(0, 0, 0)));
   set(7, 5, 2);  // x high, y high, z low
-  EXPECT_EQ(QuarterMask(mask), (1u << QuarterIndex(Eigen::Vector3i(0, 0, 0))) | (1u << QuarterIndex(Eigen::Vector3i(7, 5, 2))));
+  EXPECT_EQ(QuarterMask(mask),
+            (1u << QuarterIndex(Eigen::Vector3i(0, 0, 0))) | (1u << QuarterIndex(Eigen::Vector3i(7, 5, 2))));
   EXPECT_EQ(QuarterIndex(Eigen::Vector3i(7, 5, 2)), 0b110);
 }
 

@@ -97,7 +97,7 @@ namespace unimap::map {
 namespace {
 
 TEST(SubmapManagerTest, GrowingSubmapBuildsItsDistancesWhenItBecomesTheMatchingOne) {
-  SubmapManager manager(TestOptions(2));  // M = 2: a new growing submap after every scan
+  SubmapManager manager(TestOptions(2));   // M = 2: a new growing submap after every scan
   manager.InsertScan(Wall(), V3::Zero());  // submap 0 (matching), then submap 1 starts growing
   manager.InsertScan(Wall(), V3::Zero());  // into 0 and 1; 0 retires, 1 becomes the matching one
   manager.WaitForUpdates();
@@ -114,7 +114,7 @@ TEST(DistanceMapDeferredTest, DistancesStartOnlyWhenEnabled) {
   DistanceMap map(options);
   map.InsertScan(Wall(), V3::Zero());
   map.WaitForUpdates();
-  EXPECT_EQ(map.Snapshot()->CellCount(), 0u);       // the octree only
+  EXPECT_EQ(map.Snapshot()->CellCount(), 0u);  // the octree only
   EXPECT_FALSE(map.OccupiedVoxelCenters().empty());
   map.EnableDistances();
   map.WaitForUpdates();

@@ -80,7 +80,8 @@ TEST(SurfaceDistanceLayer, WavesFindTheNearestSurfaceVoxel) {
   const std::vector<V3> points = FloorAndWall(2);
   // Three scans: elements appear and move between them.
   for (int part = 0; part < 3; ++part) {
-    const std::vector<V3> slice(points.begin() + part * 2000, points.begin() + std::min<int>(7000, (part + 1) * 2000 + 1000));
+    const std::vector<V3> slice(points.begin() + part * 2000,
+                                points.begin() + std::min<int>(7000, (part + 1) * 2000 + 1000));
     layer.Insert(slice, V3(0.0f, 0.0f, 1.0f));
   }
   const auto field = layer.Export(V3::Zero(), 0.0, 1);
@@ -93,8 +94,7 @@ TEST(SurfaceDistanceLayer, WavesFindTheNearestSurfaceVoxel) {
     float truth = 0.0f;
     if (!NearestVoxelDistance(layer, p, &truth) || !(truth < kClamp - 0.05)) continue;
     // Elements change by up to kMoveTolerance voxels before their blocks are redone.
-    EXPECT_NEAR(field->Distance(p), truth, SurfaceDistanceLayer::kMoveTolerance * kResolution + 1e-3)
-        << p.transpose();
+    EXPECT_NEAR(field->Distance(p), truth, SurfaceDistanceLayer::kMoveTolerance * kResolution + 1e-3) << p.transpose();
     ++checked;
   }
   EXPECT_GT(checked, 100);

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <octomap/OcTree.h>
 
@@ -23,8 +23,7 @@ constexpr float kRes = 0.1f;
 
 // Uniform random points on the square of half-size half_m about centre in
 // the plane with unit normal (fixed seed).
-std::vector<V3> SamplePlane(const V3& center, const V3& normal, float half_m, int count,
-                            std::uint32_t seed) {
+std::vector<V3> SamplePlane(const V3& center, const V3& normal, float half_m, int count, std::uint32_t seed) {
   const V3 u = normal.unitOrthogonal();
   const V3 v = normal.cross(u);
   std::mt19937 rng(seed);
@@ -45,8 +44,8 @@ DistanceMapOptions PlaneOptions(bool subvoxel, bool signed_surfaces = true) {
 }
 
 // The published field after one scan of the plane seen from sensor.
-std::shared_ptr<const DistanceField> PlaneField(bool subvoxel, const V3& center, const V3& normal,
-                                                const V3& sensor, bool signed_surfaces = true) {
+std::shared_ptr<const DistanceField> PlaneField(bool subvoxel, const V3& center, const V3& normal, const V3& sensor,
+                                                bool signed_surfaces = true) {
   DistanceMap map(PlaneOptions(subvoxel, signed_surfaces));
   map.InsertScan(SamplePlane(center, normal, 2.0f, 40000, 11), sensor);
   map.WaitForUpdates();
@@ -131,8 +130,7 @@ TEST(SurfacePoints, PlanarReturnsSeenFromOneSideGiveASignedDiskDistance) {
   EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.0f, -0.04f, -0.07f)), -0.07f, 1e-5f);
   // Beside the disk (radius 0.15 m): to its rim, never negative.
   EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.25f, 0.0f, 0.0f)), 0.1f, 1e-5f);
-  EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.0f, 0.25f, -0.1f)),
-              std::sqrt(0.02f), 1e-5f);
+  EXPECT_NEAR(surfaces.SignedDistance(*element, mean + V3(0.0f, 0.25f, -0.1f)), std::sqrt(0.02f), 1e-5f);
 }
 
 // A lone scan line: the surface contains it, its normal is taken across it
@@ -160,8 +158,7 @@ TEST(SurfacePoints, ScanLinesTakeTheNormalAcrossThemTowardsTheSensor) {
 
   ASSERT_NE(surfaces.Find(unviewed), nullptr);
   EXPECT_FALSE(surfaces.Find(unviewed)->planar);
-  EXPECT_NEAR(surfaces.SignedDistance(*surfaces.Find(unviewed), V3(0.045f, 0.05f, -0.2f)), 0.23f,
-              1e-5f);
+  EXPECT_NEAR(surfaces.SignedDistance(*surfaces.Find(unviewed), V3(0.045f, 0.05f, -0.2f)), 0.23f, 1e-5f);
 }
 
 TEST(SurfacePoints, UnsignedSurfacesReadTheHeightBehindTheDiskAsAMagnitude) {
@@ -246,8 +243,7 @@ TEST(SurfacePoints, TiltedPlaneReadsZeroOnThePlane) {
 // the plane, their normals are exact): signed, or its magnitude.
 void ExpectCellsHoldTheDistanceToThePlane(bool signed_surfaces) {
   const float plane_z = 0.062f;
-  const auto field =
-      PlaneField(true, V3(0.0f, 0.0f, plane_z), V3::UnitZ(), V3(0.1f, 0.2f, 1.0f), signed_surfaces);
+  const auto field = PlaneField(true, V3(0.0f, 0.0f, plane_z), V3::UnitZ(), V3(0.1f, 0.2f, 1.0f), signed_surfaces);
   int checked = 0;
   for (int x = 0; x < field->dims().x(); ++x) {
     for (int y = 0; y < field->dims().y(); ++y) {
@@ -268,9 +264,7 @@ void ExpectCellsHoldTheDistanceToThePlane(bool signed_surfaces) {
 TEST(SurfacePoints, ExportedCellsHoldTheSignedDistanceToThePlane) { ExpectCellsHoldTheDistanceToThePlane(true); }
 
 // Unsigned surfaces (odometry's default): the magnitude on both sides.
-TEST(SurfacePoints, ExportedUnsignedCellsHoldTheDistanceToThePlane) {
-  ExpectCellsHoldTheDistanceToThePlane(false);
-}
+TEST(SurfacePoints, ExportedUnsignedCellsHoldTheDistanceToThePlane) { ExpectCellsHoldTheDistanceToThePlane(false); }
 
 // The standard OctoMap insertion frees voxels inside the tree; their
 // surfaces go with the change detection a distance transform enables.

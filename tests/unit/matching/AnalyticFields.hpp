@@ -103,9 +103,15 @@ class PartlySeenFloorField final : public DistanceQuery {
       const float a = u(rng);
       const float b = u(rng);
       switch (i % 3) {
-        case 0: out.emplace_back(-2.0f + 5.0f * a, -1.5f + 3.0f * b, 0.0f); break;  // floor
-        case 1: out.emplace_back(-2.0f, -1.5f + 3.0f * a, 2.0f * b); break;         // wall x = -2
-        default: out.emplace_back(-2.0f + 5.0f * a, -1.5f, 2.0f * b); break;        // wall y = -1.5
+        case 0:
+          out.emplace_back(-2.0f + 5.0f * a, -1.5f + 3.0f * b, 0.0f);
+          break;  // floor
+        case 1:
+          out.emplace_back(-2.0f, -1.5f + 3.0f * a, 2.0f * b);
+          break;  // wall x = -2
+        default:
+          out.emplace_back(-2.0f + 5.0f * a, -1.5f, 2.0f * b);
+          break;  // wall y = -1.5
       }
     }
     return out;

@@ -91,8 +91,8 @@ TEST(PoseRefiner, InformationOfAPlaneIsExact) {
   }
   const PoseRefiner refiner(sigma, 0.5, effective, 5);
   const Matrix6d prior = Matrix6d::Identity() * 1e-4;
-  const PoseRefinement r = refiner.Refine(Eigen::Isometry3d::Identity(), Vector6d::Zero(), prior, Vector6d::Zero(),
-                                          kAllDims, points, floor);
+  const PoseRefinement r =
+      refiner.Refine(Eigen::Isometry3d::Identity(), Vector6d::Zero(), prior, Vector6d::Zero(), kAllDims, points, floor);
   ASSERT_TRUE(r.ok) << r.reason;
   const Matrix6d& H = r.information;
   EXPECT_NEAR(H(2, 2), effective / (sigma * sigma), 1e-9);
@@ -114,8 +114,8 @@ TEST(PoseRefiner, PlanePointsRecoverAnOffsetWithNumericallyCheckedInformation) {
   Vector6d error;
   error << 0.04, -0.03, 0.05, 0.01, -0.02, 0.015;
   const Eigen::Vector3f normals[3] = {Eigen::Vector3f(0.1f, 0.0f, 1.0f).normalized(),
-                                     Eigen::Vector3f(1.0f, 0.2f, 0.0f).normalized(),
-                                     Eigen::Vector3f(-0.1f, 1.0f, 0.2f).normalized()};
+                                      Eigen::Vector3f(1.0f, 0.2f, 0.0f).normalized(),
+                                      Eigen::Vector3f(-0.1f, 1.0f, 0.2f).normalized()};
   const float offsets[3] = {1.2f, -2.5f, 1.8f};
   std::vector<PlanePoint> points;
   const Eigen::Isometry3f T_body_map = T_true.inverse().cast<float>();
@@ -163,7 +163,8 @@ TEST(PoseRefiner, UnobservedDirectionsStayWithThePrior) {
   // MAP of prior and likelihood, x (no gradient) returns to the prior mean.
   const testing::FloorField floor;
   std::vector<Eigen::Vector3f> points;
-  for (int i = 0; i < 30; ++i) points.emplace_back(0.3f * static_cast<float>(i % 6) - 0.75f, 0.2f * static_cast<float>(i / 6) - 0.4f, -0.03f);
+  for (int i = 0; i < 30; ++i)
+    points.emplace_back(0.3f * static_cast<float>(i % 6) - 0.75f, 0.2f * static_cast<float>(i / 6) - 0.4f, -0.03f);
   const double sigma = 0.1, effective = 20.0;
   const double prior_var = 0.01 * 0.01;
   Vector6d start = Vector6d::Zero();
@@ -205,9 +206,8 @@ TEST(PoseRefiner, BadInputIsAResultNotACrash) {
                                               Vector6d::Zero(), kAllDims, {}, room);
   EXPECT_FALSE(empty.ok);
   EXPECT_EQ(empty.reason, "no points to match");
-  const PoseRefinement singular =
-      refiner.Refine(Eigen::Isometry3d::Identity(), Vector6d::Zero(), Matrix6d::Zero(), Vector6d::Zero(), kAllDims,
-                     {Eigen::Vector3f(1.0f, 0.0f, 0.0f)}, room);
+  const PoseRefinement singular = refiner.Refine(Eigen::Isometry3d::Identity(), Vector6d::Zero(), Matrix6d::Zero(),
+                                                 Vector6d::Zero(), kAllDims, {Eigen::Vector3f(1.0f, 0.0f, 0.0f)}, room);
   EXPECT_FALSE(singular.ok);
   EXPECT_EQ(singular.reason, "prior covariance is not positive definite");
 }

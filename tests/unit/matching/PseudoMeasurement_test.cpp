@@ -2,8 +2,8 @@
 
 #include <random>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "estimation/Eskf.hpp"
 

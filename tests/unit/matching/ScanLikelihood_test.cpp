@@ -54,7 +54,6 @@ TEST(ScanLikelihood, PlanePointsMeasureToTheirPlane) {
   EXPECT_NEAR(likelihood.LogLikelihood(room, T, {}, wall, &sp, &sd), -50.0 * 0.25 / 0.02, 1e-3);
 }
 
-
 TEST(ScanLikelihood, UnmeasuredPointsCountInTheScanWithoutAMeasurement) {
   // Three plane points 4 cm off their plane and two points without a
   // measurement: n = 5, so the scan weighs 3/5 of what three measured

@@ -100,7 +100,7 @@ TEST(RunDataset, NanRangesAreDroppedAndAllNanLinesSkipped) {
       auto& ranges = std::get<LineScan>(*scan).ranges_m;
       ++line;
       if (line == 100) std::fill(ranges.begin(), ranges.end(), std::nanf(""));  // a line without returns
-      if (line > 100 && line <= 110) ranges[line] = std::nanf("");             // single bad beams
+      if (line > 100 && line <= 110) ranges[line] = std::nanf("");              // single bad beams
     }
     return true;
   });

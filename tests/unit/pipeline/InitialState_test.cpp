@@ -49,9 +49,8 @@ TEST(InitialStateFromWindow, StaticWindowGivesTiltAndGyroBiasAtTheLastSample) {
 }
 
 TEST(InitialStateFromWindow, ShakenWindowStartsLevelAndSaysWhy) {
-  const InitialState start =
-      InitialStateFromWindow(Window(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 2.0, 200),
-                             std::nullopt, Options());
+  const InitialState start = InitialStateFromWindow(
+      Window(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 2.0, 200), std::nullopt, Options());
   ASSERT_EQ(start.notes.size(), 1u);
   EXPECT_EQ(start.notes[0].rfind("initial alignment: ", 0), 0u) << start.notes[0];
   EXPECT_NE(start.notes[0].find("starting level"), std::string::npos) << start.notes[0];
@@ -65,9 +64,8 @@ TEST(InitialStateFromWindow, GivenPosePlacesTheStateThere) {
   T_map_body.translation() = Eigen::Vector3d(3.0, -1.0, 0.5);
   LocalizerOptions options = Options();
   options.initial_attitude = estimation::InitialAttitude::kGravity;
-  const InitialState start =
-      InitialStateFromWindow(Window(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 0.0, 200),
-                             T_map_body, options);
+  const InitialState start = InitialStateFromWindow(
+      Window(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 0.0, 200), T_map_body, options);
   EXPECT_TRUE(start.notes.empty());
   ASSERT_TRUE(start.attitude.has_value());
   EXPECT_EQ(*start.attitude, estimation::InitialAttitude::kGravity);

@@ -78,8 +78,8 @@ Tracked Track(const fs::path& data, estimation::MotionSource source) {
     return it == truth.end() ? truth.back() : *it;
   };
   // The estimate starts level at the origin, yaw 0; the truth starts level, yaw 0.
-  const Eigen::Vector3d offset = TruthAt(estimate.front().time_s).T_map_body.translation() -
-                                 estimate.front().T_map_body.translation();
+  const Eigen::Vector3d offset =
+      TruthAt(estimate.front().time_s).T_map_body.translation() - estimate.front().T_map_body.translation();
   for (const StampedPose& p : estimate) {
     const Eigen::Vector3d error = p.T_map_body.translation() + offset - TruthAt(p.time_s).T_map_body.translation();
     out.max_error_m = std::max(out.max_error_m, error.norm());
@@ -163,9 +163,7 @@ TEST(LocalizerTest, MatchingAgainstHalfAHorizonPullsAStandingSensor) {
   // Every point measured: the lines of the second half turn are pulled
   // towards the half of the horizon the map holds, and the estimate moves
   // while the sensor stands still.
-  const StartMotion m = TrackHallwayStart("all_points", [](LocalizerOptions* o) {
-    o->max_predicted_distance_m = 0.0;
-  });
+  const StartMotion m = TrackHallwayStart("all_points", [](LocalizerOptions* o) { o->max_predicted_distance_m = 0.0; });
   EXPECT_GT(m.max_translation_m, 0.3);
   EXPECT_GT(m.max_rotation_deg, 3.0);
 }

@@ -57,23 +57,24 @@ std::vector<std::string> Rows(MapperOptions options) {
 
 TEST(MapperSettingsTest, WithoutASectionTheOptionsAreFromPlatforms) {
   const Platform platform = WithSettings("");
-  EXPECT_EQ(Rows(MapperOptionsFor(platform)), Rows(MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters))));
+  EXPECT_EQ(Rows(MapperOptionsFor(platform)),
+            Rows(MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters))));
 }
 
 TEST(MapperSettingsTest, EverySectionReachesItsStruct) {
-  const MapperOptions o = MapperOptionsFor(WithSettings(
-      "mapper:\n"
-      "  eskf: {accel_bias_walk_m_s2_sqrt_s: 0.0002}\n"
-      "  motion: {velocity_sigma_m_s: 2}\n"
-      "  gpf: {num_particles: 250, planar: true}\n"
-      "  map: {prob_hit: 0.8, max_edt_cells: 1000000}\n"
-      "  reacquire: {coarse_factor: 3}\n"
-      "  line_gap_fill: {max_gap_m: 0.5}\n"
-      "  graph: {max_iterations: 7}\n"
-      "  loop_closure: {min_score: 0.7, seed: 9}\n"
-      "  loop_search: {enabled: false, max_radius_m: 3}\n"
-      "  min_points_to_match: 50\n"
-      "  scan_sigma_position_m: 0.2\n"));
+  const MapperOptions o =
+      MapperOptionsFor(WithSettings("mapper:\n"
+                                    "  eskf: {accel_bias_walk_m_s2_sqrt_s: 0.0002}\n"
+                                    "  motion: {velocity_sigma_m_s: 2}\n"
+                                    "  gpf: {num_particles: 250, planar: true}\n"
+                                    "  map: {prob_hit: 0.8, max_edt_cells: 1000000}\n"
+                                    "  reacquire: {coarse_factor: 3}\n"
+                                    "  line_gap_fill: {max_gap_m: 0.5}\n"
+                                    "  graph: {max_iterations: 7}\n"
+                                    "  loop_closure: {min_score: 0.7, seed: 9}\n"
+                                    "  loop_search: {enabled: false, max_radius_m: 3}\n"
+                                    "  min_points_to_match: 50\n"
+                                    "  scan_sigma_position_m: 0.2\n"));
   EXPECT_EQ(o.localizer.eskf.accel_bias_walk_m_s2_sqrt_s, 0.0002);
   EXPECT_EQ(o.localizer.motion.velocity_sigma_m_s, 2.0);
   EXPECT_EQ(o.localizer.gpf.num_particles, 250);
@@ -195,11 +196,12 @@ TEST(MapperSettingsTest, ListingSaysWhereEachValueCameFrom) {
   // Every section is listed, and every key once.
   std::set<std::string> keys;
   for (const MapperSettingRow& row : rows) EXPECT_TRUE(keys.insert(row.key).second) << row.key;
-  for (const char* section : {"eskf", "motion", "gpf", "map", "reacquire", "line_gap_fill", "graph", "loop_closure",
-                              "loop_search"}) {
+  for (const char* section :
+       {"eskf", "motion", "gpf", "map", "reacquire", "line_gap_fill", "graph", "loop_closure", "loop_search"}) {
     const std::string prefix = std::string("mapper.") + section + ".";
-    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const MapperSettingRow& r) { return r.key.rfind(prefix, 0) == 0; }))
-        << prefix;
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const MapperSettingRow& r) {
+      return r.key.rfind(prefix, 0) == 0;
+    })) << prefix;
   }
 }
 

@@ -44,7 +44,8 @@ const MappedTunnel& Mapped() {
       io::TumTrajectoryWriter trajectory(file);
       RunDataset(reader, mapper, trajectory, RunOptions{});
     }
-    for (const StampedPose& p : io::ReadTumTrajectory(file)) out.streamed.push_back({p.time_s, p.T_map_body, true, 0, {}});
+    for (const StampedPose& p : io::ReadTumTrajectory(file))
+      out.streamed.push_back({p.time_s, p.T_map_body, true, 0, {}});
     out.optimized = mapper.OptimizedTrajectory();
     out.map = mapper.MapPoints(0.1);
     out.stats = mapper.stats();
@@ -93,8 +94,7 @@ TEST(MapperTest, MapPointsLieOnTheTrueSurfaces) {
   // The map is in the mapper's frame (the start pose): move it into the
   // world with the true start pose (the truth's first pose is that of the
   // first estimate; the platform is static for the first second).
-  const sim::Scenario scenario =
-      sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
+  const sim::Scenario scenario = sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
   sim::World world = sim::LoadWorld(scenario.world, scenario.world_file);
   world.Build();
   io::DatasetReader reader(test::CleanDataset());

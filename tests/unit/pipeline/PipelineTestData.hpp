@@ -28,7 +28,8 @@ inline std::filesystem::path Scratch(const std::string& name) {
   return dir;
 }
 
-inline const std::filesystem::path kPlatform = std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/platforms/rotating_hokuyo.yaml";
+inline const std::filesystem::path kPlatform =
+    std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/platforms/rotating_hokuyo.yaml";
 
 // The first duration_s of configs/scenarios/<scenario>.yaml with the
 // rotating Hokuyo, simulated into Scratch(name).
@@ -40,8 +41,7 @@ inline std::filesystem::path Simulate(const std::string& name, const std::string
   options.duration_s = duration_s;
   options.payload = kPlatform.string();
   sim::Simulator(
-      sim::LoadScenario(std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/scenarios" / (scenario + ".yaml")),
-      options)
+      sim::LoadScenario(std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs/scenarios" / (scenario + ".yaml")), options)
       .Run();
   return out;
 }

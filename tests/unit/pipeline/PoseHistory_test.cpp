@@ -28,9 +28,9 @@ TEST(PoseHistory, DropsOldPosesAndIgnoresStaleOnes) {
   for (int i = 0; i <= 50; ++i) history.Add(0.1 * i, Pose(0.1 * i, 0.0));
   EXPECT_NEAR(history.At(0.0).translation().x(), 4.0, 1e-9);  // kept back to 5.0 - 1.0 s
   EXPECT_NEAR(history.At(4.05).translation().x(), 4.05, 1e-9);
-  history.Add(4.0, Pose(100.0, 0.0));                          // older than the latest: ignored
+  history.Add(4.0, Pose(100.0, 0.0));  // older than the latest: ignored
   EXPECT_NEAR(history.At(4.0).translation().x(), 4.0, 1e-9);
-  history.Add(5.0, Pose(7.0, 0.0));                            // same time: replaced
+  history.Add(5.0, Pose(7.0, 0.0));  // same time: replaced
   EXPECT_NEAR(history.At(5.0).translation().x(), 7.0, 1e-12);
 }
 

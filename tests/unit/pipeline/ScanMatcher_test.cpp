@@ -56,7 +56,7 @@ LocalizerOptions Options() {
   LocalizerOptions o;
   o.max_predicted_distance_m = 0.15;  // 1.5 voxels
   o.sweep_gate_sigmas = 3.0;
-  o.gpf.voxel_size_m = 0.0;           // every point reaches the gate
+  o.gpf.voxel_size_m = 0.0;  // every point reaches the gate
   o.gpf.max_points = 0;
   return o;
 }

@@ -82,16 +82,19 @@ TEST(TrajectoryGraphTest, LoopClosureRemovesDriftOnASquare) {
   // Odometry: true increments with a small extra yaw each step.
   local.push_back(truth[0]);
   for (int k = 1; k < kScans; ++k) {
-    local.push_back(local.back() * truth[static_cast<std::size_t>(k - 1)].inverse() * truth[static_cast<std::size_t>(k)] *
-                    Pose(0, 0, 0, kDriftRadPerScan));
+    local.push_back(local.back() * truth[static_cast<std::size_t>(k - 1)].inverse() *
+                    truth[static_cast<std::size_t>(k)] * Pose(0, 0, 0, kDriftRadPerScan));
   }
   TrajectoryGraph graph(0.05, 0.005);
   std::vector<Eigen::Isometry3d> submap_frames;
   for (int k = 0; k < kScans; ++k) {
     const int id = k / 4;
     const bool create = k % 4 == 0;
-    if (create) submap_frames.push_back(Eigen::Isometry3d(Eigen::Translation3d(local[static_cast<std::size_t>(k)].translation())));
-    graph.AddKeyScan(k, local[static_cast<std::size_t>(k)], Into(id, submap_frames[static_cast<std::size_t>(id)], create));
+    if (create)
+      submap_frames.push_back(
+          Eigen::Isometry3d(Eigen::Translation3d(local[static_cast<std::size_t>(k)].translation())));
+    graph.AddKeyScan(k, local[static_cast<std::size_t>(k)],
+                     Into(id, submap_frames[static_cast<std::size_t>(id)], create));
   }
   const double before = (graph.T_world_key(kScans - 1).translation() - truth.back().translation()).norm();
   ASSERT_GT(before, 1.0);
@@ -114,8 +117,11 @@ TEST(TrajectoryGraphTest, LoopClosureRemovesDriftOnASquare) {
   // The whole square improves, not just the end.
   double max_before = 0.0, max_after = 0.0;
   for (int k = 0; k < kScans; ++k) {
-    max_before = std::max(max_before, (local[static_cast<std::size_t>(k)].translation() - truth[static_cast<std::size_t>(k)].translation()).norm());
-    max_after = std::max(max_after, (graph.T_world_key(k).translation() - truth[static_cast<std::size_t>(k)].translation()).norm());
+    max_before = std::max(
+        max_before,
+        (local[static_cast<std::size_t>(k)].translation() - truth[static_cast<std::size_t>(k)].translation()).norm());
+    max_after = std::max(
+        max_after, (graph.T_world_key(k).translation() - truth[static_cast<std::size_t>(k)].translation()).norm());
   }
   EXPECT_LT(max_after, 0.25 * max_before) << max_before << " -> " << max_after;
   // Corrected poses follow: the last key scan's local pose maps to its world pose.

@@ -51,8 +51,7 @@ TEST_P(CoreDefaultsTest, PaperParametersHaveThePlatformsValuesAndReasons) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllPayloads, CoreDefaultsTest,
-                         ::testing::ValuesIn(plugin_test::PayloadNames()),
+INSTANTIATE_TEST_SUITE_P(AllPayloads, CoreDefaultsTest, ::testing::ValuesIn(plugin_test::PayloadNames()),
                          plugin_test::PayloadTestName);
 
 }  // namespace

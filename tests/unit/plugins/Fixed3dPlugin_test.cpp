@@ -16,12 +16,12 @@ using plugin_test::kPi;
 
 constexpr double kSpinHz = 10.0;
 constexpr double kBlockPeriodS = 55.296e-6;  // VLP-16 firing cycle: 16 rings per block
-constexpr int kBlocks = 1800;                 // 358 deg of one 10 Hz revolution
+constexpr int kBlocks = 1800;                // 358 deg of one 10 Hz revolution
 constexpr int kRings = 16;
 
 // One synthetic VLP-16 sweep in the LiDAR frame with the true firing times.
 struct Sweep {
-  RawScan scan;                    // point times zeroed, has_point_time = false
+  RawScan scan;                     // point times zeroed, has_point_time = false
   std::vector<double> true_time_s;  // per point
 };
 
@@ -41,8 +41,7 @@ Sweep MakeSweep(double t0_s, double az0_rad, bool clockwise) {
       const double range = 4.0 + 0.3 * static_cast<double>(r) + 2.0 * std::sin(3.0 * azimuth);
       Point p;
       p.position_m = range * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
-                                             std::cos(elevation) * std::sin(azimuth),
-                                             std::sin(elevation));
+                                             std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
       p.ring = static_cast<std::uint16_t>(r);
       sweep.scan.points.push_back(p);
       sweep.true_time_s.push_back(t);
@@ -62,22 +61,18 @@ class Fixed3dPluginTest : public ::testing::Test {
 TEST_F(Fixed3dPluginTest, IsAFixedMountWithoutEncoder) {
   EXPECT_EQ(plugin().Name(), "fixed_3d");
   EXPECT_FALSE(plugin().UsesEncoder());
-  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m",
-                                          std::vector<double>{0.1, -0.2, 0.3}},
-                                         {"extrinsic.body_lidar.rpy_deg",
-                                          std::vector<double>{5.0, 10.0, -30.0}}});
+  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m", std::vector<double>{0.1, -0.2, 0.3}},
+                                         {"extrinsic.body_lidar.rpy_deg", std::vector<double>{5.0, 10.0, -30.0}}});
   const EncoderTrack no_encoder;
   EXPECT_EQ(plugin().MotorAngleAt(no_encoder, 12.5), 0.0);
-  const Eigen::Isometry3d expected =
-      plugin_test::PoseRpyDeg(Eigen::Vector3d(0.1, -0.2, 0.3), 5.0, 10.0, -30.0);
+  const Eigen::Isometry3d expected = plugin_test::PoseRpyDeg(Eigen::Vector3d(0.1, -0.2, 0.3), 5.0, 10.0, -30.0);
   for (const double t : {0.0, 3.0, 1e6}) {
     EXPECT_TRUE(plugin().BodyFromLidarAt(no_encoder, t).isApprox(expected, 1e-12)) << t;
   }
 }
 
 TEST_F(Fixed3dPluginTest, DerivesClockwiseFiringTimesFromAzimuth) {
-  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m",
-                                          std::vector<double>{0.0, 0.0, 0.0}}});
+  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m", std::vector<double>{0.0, 0.0, 0.0}}});
   // Start at 200 deg so the sweep crosses the -pi/pi azimuth seam.
   const Sweep sweep = MakeSweep(100.0, 200.0 * kDeg, /*clockwise=*/true);
   const BodyScan out = plugin().Deskew(sweep.scan, EncoderTrack(), plugin_test::StaticBody());
@@ -116,12 +111,9 @@ TEST_F(Fixed3dPluginTest, DerivesCounterClockwiseFiringTimesWhenConfigured) {
 }
 
 TEST_F(Fixed3dPluginTest, DerivedTimesDeskewAMovingBodyExactly) {
-  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m",
-                                          std::vector<double>{0.1, 0.0, 0.2}},
-                                         {"extrinsic.body_lidar.rpy_deg",
-                                          std::vector<double>{0.0, 10.0, 0.0}}});
-  const Eigen::Isometry3d T_body_lidar =
-      plugin_test::PoseRpyDeg(Eigen::Vector3d(0.1, 0.0, 0.2), 0.0, 10.0, 0.0);
+  plugin_test::ConfigureWith(&plugin(), {{"extrinsic.body_lidar.translation_m", std::vector<double>{0.1, 0.0, 0.2}},
+                                         {"extrinsic.body_lidar.rpy_deg", std::vector<double>{0.0, 10.0, 0.0}}});
+  const Eigen::Isometry3d T_body_lidar = plugin_test::PoseRpyDeg(Eigen::Vector3d(0.1, 0.0, 0.2), 0.0, 10.0, 0.0);
   // 2 m/s forward while yawing at 1 rad/s: 0.2 m and 5.7 deg within one sweep.
   const MotionQuery T_world_body_at = [](double t) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -137,8 +129,7 @@ TEST_F(Fixed3dPluginTest, DerivedTimesDeskewAMovingBodyExactly) {
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     // p_body(t_ref) = T_world_body(t_ref)^-1 * T_world_body(t_i) * T_body_lidar * p_lidar
     const Eigen::Vector3d p_lidar = sweep.scan.points[i].position_m;
-    const Eigen::Vector3d expected =
-        T_body_world_ref * T_world_body_at(sweep.true_time_s[i]) * T_body_lidar * p_lidar;
+    const Eigen::Vector3d expected = T_body_world_ref * T_world_body_at(sweep.true_time_s[i]) * T_body_lidar * p_lidar;
     ASSERT_LT((out.points[i].position_m - expected).norm(), 1e-9) << "point " << i;
     largest_motion_m = std::max(largest_motion_m, (expected - T_body_lidar * p_lidar).norm());
   }

@@ -64,14 +64,12 @@ TEST_P(MotorModelTest, DefaultScanPlaneContainsTheVerticalMotorAxis) {
     const double t = 2.0 * static_cast<double>(k) / 12.0;
     const double theta = kPi * t;
     const Eigen::Matrix3d R = plugin().BodyFromLidarAt(encoder, t).linear();
-    EXPECT_LT((R.col(0) - Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0)).norm(), 1e-12)
-        << "theta " << theta;
+    EXPECT_LT((R.col(0) - Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0)).norm(), 1e-12) << "theta " << theta;
     EXPECT_LT((R.col(1) - Eigen::Vector3d::UnitZ()).norm(), 1e-12) << "theta " << theta;
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(MotorPayloads, MotorModelTest,
-                         ::testing::Values("rotating_3d", "rotating_2d"),
+INSTANTIATE_TEST_SUITE_P(MotorPayloads, MotorModelTest, ::testing::Values("rotating_3d", "rotating_2d"),
                          plugin_test::PayloadTestName);
 
 }  // namespace

@@ -28,8 +28,7 @@ struct FlatPlatform {
   std::map<std::string, std::string> parameters;
 };
 
-void Flatten(const YAML::Node& map, const std::string& prefix,
-             std::map<std::string, std::string>* out) {
+void Flatten(const YAML::Node& map, const std::string& prefix, std::map<std::string, std::string>* out) {
   for (auto it = map.begin(); it != map.end(); ++it) {
     const std::string key = prefix + it->first.as<std::string>();
     const YAML::Node value = it->second;
@@ -47,9 +46,7 @@ void Flatten(const YAML::Node& map, const std::string& prefix,
   }
 }
 
-std::filesystem::path PlatformDir() {
-  return std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs" / "platforms";
-}
+std::filesystem::path PlatformDir() { return std::filesystem::path(UNIMAP_SOURCE_DIR) / "configs" / "platforms"; }
 
 // Every shipped platform file, by name.
 const std::vector<std::string>& PlatformFileNames() {
@@ -104,15 +101,14 @@ TEST(PlatformFilesTest, DifferOnlyInPluginPaperParametersAndExtrinsics) {
     return rest;
   };
   for (std::size_t i = 1; i < platforms.size(); ++i) {
-    EXPECT_EQ(shared(platforms[i]), shared(platforms[0]))
-        << platforms[i].file << " vs " << platforms[0].file;
+    EXPECT_EQ(shared(platforms[i]), shared(platforms[0])) << platforms[i].file << " vs " << platforms[0].file;
   }
 }
 
 TEST(PlatformFilesTest, StartWithACommentNamingTheRig) {
-  const std::map<std::string, std::string> rig = {
-      {"fixed_vlp16.yaml", "VLP-16"},     {"rotating_vlp16.yaml", "VLP-16"}, {"rotating_hokuyo.yaml", "Hokuyo"},
-      {"kitti_hdl64.yaml", "HDL-64E"},    {"ouster_os1_64.yaml", "OS1-64"},  {"livox_avia.yaml", "Livox"}};
+  const std::map<std::string, std::string> rig = {{"fixed_vlp16.yaml", "VLP-16"},     {"rotating_vlp16.yaml", "VLP-16"},
+                                                  {"rotating_hokuyo.yaml", "Hokuyo"}, {"kitti_hdl64.yaml", "HDL-64E"},
+                                                  {"ouster_os1_64.yaml", "OS1-64"},   {"livox_avia.yaml", "Livox"}};
   for (const auto& name : PlatformFileNames()) {
     std::ifstream in(PlatformDir() / name);
     std::string first_line;
@@ -130,8 +126,7 @@ TEST(PlatformFilesTest, EveryKeyIsKnownToThePluginAndTheFileLoads) {
     EXPECT_EQ(loaded.plugin->Name(), flat.plugin) << name;
     const ParameterSet defaults = loaded.plugin->Defaults();
     for (const auto& [key, value] : flat.parameters) {
-      EXPECT_NE(defaults.Find(key), nullptr)
-          << name << ": " << key << " unknown to " << flat.plugin;
+      EXPECT_NE(defaults.Find(key), nullptr) << name << ": " << key << " unknown to " << flat.plugin;
     }
     // The real platform loader accepts the file (types, ranges, plugin).
     const Platform platform = LoadPlatform(PlatformDir() / name, loader);

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "unimap/Deskew.hpp"
 #include "unimap/EncoderTrack.hpp"
@@ -28,9 +28,7 @@ inline const std::vector<std::string>& PayloadNames() {
 }
 
 // Test name suffix for a test parameterised over payload names.
-inline std::string PayloadTestName(const ::testing::TestParamInfo<std::string>& param) {
-  return param.param;
-}
+inline std::string PayloadTestName(const ::testing::TestParamInfo<std::string>& param) { return param.param; }
 
 // Loads an in-tree plugin from the build tree's plugin folder only.
 inline LoadedPlugin LoadPayload(const std::string& name) {
@@ -38,16 +36,14 @@ inline LoadedPlugin LoadPayload(const std::string& name) {
 }
 
 // The plugin's defaults with some keys replaced.
-inline ParameterMap DefaultsWith(const PayloadPlugin& plugin,
-                                 const std::map<std::string, ParameterValue>& overrides) {
+inline ParameterMap DefaultsWith(const PayloadPlugin& plugin, const std::map<std::string, ParameterValue>& overrides) {
   ParameterMap map = plugin.Defaults().DefaultMap();
   for (const auto& [key, value] : overrides) map.Set(key, value);
   return map;
 }
 
 // Configures the plugin with its defaults and some keys replaced.
-inline void ConfigureWith(PayloadPlugin* plugin,
-                          const std::map<std::string, ParameterValue>& overrides) {
+inline void ConfigureWith(PayloadPlugin* plugin, const std::map<std::string, ParameterValue>& overrides) {
   plugin->Configure(DefaultsWith(*plugin, overrides));
 }
 
@@ -57,8 +53,8 @@ inline MotionQuery StaticBody() {
 }
 
 // Rz(yaw) * Ry(pitch) * Rx(roll) with a translation, angles in degrees.
-inline Eigen::Isometry3d PoseRpyDeg(const Eigen::Vector3d& translation_m, double roll_deg,
-                                    double pitch_deg, double yaw_deg) {
+inline Eigen::Isometry3d PoseRpyDeg(const Eigen::Vector3d& translation_m, double roll_deg, double pitch_deg,
+                                    double yaw_deg) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = (Eigen::AngleAxisd(yaw_deg * kDeg, Eigen::Vector3d::UnitZ()) *
                 Eigen::AngleAxisd(pitch_deg * kDeg, Eigen::Vector3d::UnitY()) *
@@ -78,8 +74,8 @@ inline double WrapTwoPi(double angle_rad) {
 // Encoder of a motor turning at a constant rate: true (unwrapped) angle
 // angle0_rad + rate_rad_s * (t - t0_s), sampled at sample_hz over [t0_s, t1_s]
 // and reported wrapped into [0, 2pi).
-inline EncoderTrack ConstantRateEncoder(double t0_s, double t1_s, double angle0_rad,
-                                        double rate_rad_s, double sample_hz) {
+inline EncoderTrack ConstantRateEncoder(double t0_s, double t1_s, double angle0_rad, double rate_rad_s,
+                                        double sample_hz) {
   std::vector<EncoderSample> samples;
   const int count = static_cast<int>(std::ceil((t1_s - t0_s) * sample_hz)) + 1;
   for (int k = 0; k < count; ++k) {
@@ -93,19 +89,17 @@ inline EncoderTrack ConstantRateEncoder(double t0_s, double t1_s, double angle0_
 //   T_body_lidar(theta) = T_body_motor * Rot(axis, theta) * T_motor_lidar,
 //   theta = direction * encoder + offset.
 struct MountTruth {
-  Eigen::Vector3d body_motor_m{0.05, 0.0, -0.15};   // T_body_motor translation
+  Eigen::Vector3d body_motor_m{0.05, 0.0, -0.15};  // T_body_motor translation
   Eigen::Vector3d body_motor_rpy_deg{0.0, 0.0, 10.0};
-  Eigen::Vector3d motor_lidar_m{0.0, 0.02, -0.1};   // T_motor_lidar translation
+  Eigen::Vector3d motor_lidar_m{0.0, 0.02, -0.1};  // T_motor_lidar translation
   Eigen::Vector3d motor_lidar_rpy_deg{90.0, 0.0, 0.0};
-  Eigen::Vector3d axis{0.0, 0.0, 1.0};              // unit
+  Eigen::Vector3d axis{0.0, 0.0, 1.0};  // unit
   double offset_deg = 25.0;
   int direction = -1;
 
   // The platform keys that configure a plugin with this mount.
   std::map<std::string, ParameterValue> Overrides() const {
-    const auto list = [](const Eigen::Vector3d& v) {
-      return std::vector<double>{v.x(), v.y(), v.z()};
-    };
+    const auto list = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
     return {{"extrinsic.body_motor.translation_m", list(body_motor_m)},
             {"extrinsic.body_motor.rpy_deg", list(body_motor_rpy_deg)},
             {"extrinsic.motor_lidar.translation_m", list(motor_lidar_m)},
@@ -124,8 +118,7 @@ struct MountTruth {
     const Eigen::Vector3d& m = motor_lidar_rpy_deg;
     Eigen::Isometry3d R_motor = Eigen::Isometry3d::Identity();
     R_motor.linear() = Eigen::AngleAxisd(theta_rad, axis).toRotationMatrix();
-    return PoseRpyDeg(body_motor_m, b.x(), b.y(), b.z()) * R_motor *
-           PoseRpyDeg(motor_lidar_m, m.x(), m.y(), m.z());
+    return PoseRpyDeg(body_motor_m, b.x(), b.y(), b.z()) * R_motor * PoseRpyDeg(motor_lidar_m, m.x(), m.y(), m.z());
   }
 };
 

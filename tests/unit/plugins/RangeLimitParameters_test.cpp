@@ -38,8 +38,7 @@ class RangeLimitParametersTest : public ::testing::TestWithParam<std::string> {
   PayloadPlugin& plugin() { return *loaded_.plugin; }
   // Ranges of the returns that survive deskewing a static body's scan.
   std::vector<double> KeptRanges(const std::vector<double>& ranges_m, std::size_t* dropped) {
-    const BodyScan out =
-        plugin().Deskew(ScanAtRanges(ranges_m), encoder_, plugin_test::StaticBody());
+    const BodyScan out = plugin().Deskew(ScanAtRanges(ranges_m), encoder_, plugin_test::StaticBody());
     *dropped = out.dropped_out_of_range;
     std::vector<double> kept_ranges;  // the intensity carries the input index
     for (const Point& p : out.points) {
@@ -88,8 +87,7 @@ TEST_P(RangeLimitParametersTest, LimitsOutOfOrderAreAConfigErrorNamingTheKey) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllPayloads, RangeLimitParametersTest,
-                         ::testing::ValuesIn(plugin_test::PayloadNames()),
+INSTANTIATE_TEST_SUITE_P(AllPayloads, RangeLimitParametersTest, ::testing::ValuesIn(plugin_test::PayloadNames()),
                          plugin_test::PayloadTestName);
 
 }  // namespace

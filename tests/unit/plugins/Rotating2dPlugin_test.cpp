@@ -18,11 +18,11 @@ namespace {
 using plugin_test::kDeg;
 using plugin_test::kPi;
 
-constexpr int kBeams = 1081;                               // UTM-30LX: 270 deg in 0.25 deg steps
-constexpr double kLinePeriodS = 1.0 / 40.0;                // 40 Hz
+constexpr int kBeams = 1081;                              // UTM-30LX: 270 deg in 0.25 deg steps
+constexpr double kLinePeriodS = 1.0 / 40.0;               // 40 Hz
 constexpr double kBeamIntervalS = 0.25 / (360.0 * 40.0);  // mirror turns 0.25 deg
-constexpr double kWallX = 2.5;                             // the wall: body x = 2.5 m
-constexpr double kMotorRate = kPi;                         // 30 rpm (rad/s)
+constexpr double kWallX = 2.5;                            // the wall: body x = 2.5 m
+constexpr double kMotorRate = kPi;                        // 30 rpm (rad/s)
 constexpr double kEncoderStartS = 9.9;
 constexpr double kEncoderStartRad = 4.0;
 
@@ -65,8 +65,7 @@ class Rotating2dPluginTest : public ::testing::Test {
   void SetUp() override {
     loaded_ = plugin_test::LoadPayload("rotating_2d");
     plugin_test::ConfigureWith(loaded_.plugin.get(), mount_.Overrides());
-    encoder_ = plugin_test::ConstantRateEncoder(kEncoderStartS, 11.0, kEncoderStartRad,
-                                                kMotorRate, 50.0);
+    encoder_ = plugin_test::ConstantRateEncoder(kEncoderStartS, 11.0, kEncoderStartRad, kMotorRate, 50.0);
   }
   PayloadPlugin& plugin() { return *loaded_.plugin; }
 
@@ -95,8 +94,7 @@ TEST_F(Rotating2dPluginTest, WallPointsLandOnTheWallWithAStaticBody) {
     // The same line with one motor angle (its end's) for every beam.
     const Eigen::Isometry3d T_end = plugin().BodyFromLidarAt(encoder_, converted.scan.end_time_s);
     for (const Point& p : converted.scan.points) {
-      worst_single_angle_m =
-          std::max(worst_single_angle_m, std::abs((T_end * p.position_m).x() - kWallX));
+      worst_single_angle_m = std::max(worst_single_angle_m, std::abs((T_end * p.position_m).x() - kWallX));
     }
   }
   EXPECT_GT(total, 5000u);

@@ -16,9 +16,9 @@ using plugin_test::kPi;
 
 constexpr double kSpinHz = 10.0;
 constexpr double kBlockPeriodS = 55.296e-6;  // VLP-16 firing cycle
-constexpr int kBlocks = 1800;                 // 358 deg of one revolution
-constexpr double kWallX = 3.0;                // the wall: body x = 3 m
-constexpr double kMotorRate = kPi;            // 30 rpm (rad/s)
+constexpr int kBlocks = 1800;                // 358 deg of one revolution
+constexpr double kWallX = 3.0;               // the wall: body x = 3 m
+constexpr double kMotorRate = kPi;           // 30 rpm (rad/s)
 constexpr double kEncoderStartS = 9.95;
 constexpr double kEncoderStartRad = 1.0;
 
@@ -43,8 +43,8 @@ WallScan MakeWallScan(const plugin_test::MountTruth& mount, double t0_s) {
     const Eigen::Isometry3d T_body_lidar = mount.BodyFromLidar(mount.MotorAngle(EncoderAngle(t)));
     for (int r = 0; r < 16; ++r) {
       const double elevation = (-15.0 + 2.0 * static_cast<double>(r)) * kDeg;
-      const Eigen::Vector3d u(std::cos(elevation) * std::cos(azimuth),
-                              std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+      const Eigen::Vector3d u(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                              std::sin(elevation));
       const Eigen::Vector3d d = T_body_lidar.linear() * u;
       if (d.x() < 1e-3) continue;
       const double s = (kWallX - T_body_lidar.translation().x()) / d.x();
@@ -65,8 +65,7 @@ class Rotating3dPluginTest : public ::testing::Test {
   void SetUp() override {
     loaded_ = plugin_test::LoadPayload("rotating_3d");
     plugin_test::ConfigureWith(loaded_.plugin.get(), mount_.Overrides());
-    encoder_ = plugin_test::ConstantRateEncoder(kEncoderStartS, 10.3, kEncoderStartRad,
-                                                kMotorRate, 100.0);
+    encoder_ = plugin_test::ConstantRateEncoder(kEncoderStartS, 10.3, kEncoderStartRad, kMotorRate, 100.0);
   }
   PayloadPlugin& plugin() { return *loaded_.plugin; }
 
@@ -110,8 +109,7 @@ TEST_F(Rotating3dPluginTest, DerivesFiringTimesThenMotorAnglesForUnstampedSweeps
   wall.scan.end_time_s = wall.scan.start_time_s;
   const BodyScan out = plugin().Deskew(wall.scan, encoder_, plugin_test::StaticBody());
   ASSERT_EQ(out.points.size(), wall.scan.points.size());
-  EXPECT_NEAR(out.reference_time_s, *std::max_element(true_time_s.begin(), true_time_s.end()),
-              1e-9);
+  EXPECT_NEAR(out.reference_time_s, *std::max_element(true_time_s.begin(), true_time_s.end()), 1e-9);
   for (std::size_t i = 0; i < out.points.size(); ++i) {
     ASSERT_NEAR(out.points[i].time_s, true_time_s[i], 1e-9) << "point " << i;
     ASSERT_LT((out.points[i].position_m - wall.true_body_m[i]).norm(), 1e-9) << "point " << i;

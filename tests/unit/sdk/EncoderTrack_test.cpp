@@ -16,8 +16,7 @@ double WrapTo2Pi(double a) {
 }
 
 // Constant-rate rotation sampled at irregular times, wrapped to [0, 2pi).
-std::vector<EncoderSample> ConstantRate(double rate_rad_s, double phase_rad, int count,
-                                        std::uint32_t seed) {
+std::vector<EncoderSample> ConstantRate(double rate_rad_s, double phase_rad, int count, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> gap(0.002, 0.03);
   std::vector<EncoderSample> samples;

@@ -93,22 +93,22 @@ TEST(BoxPrimitive, RotatedBoxUsesItsOwnAxes) {
 
 TEST(BoxPrimitive, SurfaceDistanceMatchesClosedForm) {
   const BoxPrimitive box = AlignedBox();
-  EXPECT_NEAR(box.SurfaceDistance({-3, 2, 3}), 3.0, 1e-12);                       // face
-  EXPECT_NEAR(box.SurfaceDistance({-1, -2, 3}), std::sqrt(1.0 + 4.0), 1e-12);       // edge
-  EXPECT_NEAR(box.SurfaceDistance({-1, -2, -3}), std::sqrt(1.0 + 4.0 + 9.0), 1e-12); // corner
-  EXPECT_NEAR(box.SurfaceDistance({1, 2, 3}), 1.0, 1e-12);                        // inside: x walls
-  EXPECT_NEAR(box.SurfaceDistance({1.5, 3.8, 3}), 0.2, 1e-12);                    // inside, near y = 4
-  EXPECT_NEAR(box.SurfaceDistance({2, 1, 1}), 0.0, 1e-12);                        // on a face
+  EXPECT_NEAR(box.SurfaceDistance({-3, 2, 3}), 3.0, 1e-12);                           // face
+  EXPECT_NEAR(box.SurfaceDistance({-1, -2, 3}), std::sqrt(1.0 + 4.0), 1e-12);         // edge
+  EXPECT_NEAR(box.SurfaceDistance({-1, -2, -3}), std::sqrt(1.0 + 4.0 + 9.0), 1e-12);  // corner
+  EXPECT_NEAR(box.SurfaceDistance({1, 2, 3}), 1.0, 1e-12);                            // inside: x walls
+  EXPECT_NEAR(box.SurfaceDistance({1.5, 3.8, 3}), 0.2, 1e-12);                        // inside, near y = 4
+  EXPECT_NEAR(box.SurfaceDistance({2, 1, 1}), 0.0, 1e-12);                            // on a face
   const BoxPrimitive turned({1, 2, 3}, {2, 4, 6}, Yaw(90));
-  EXPECT_NEAR(turned.SurfaceDistance({-4, 2, 3}), 3.0, 1e-12);  // x face at -1
-  EXPECT_NEAR(turned.SurfaceDistance({1, 2.5, 3}), 0.5, 1e-12); // inside, y walls at 1 and 3
+  EXPECT_NEAR(turned.SurfaceDistance({-4, 2, 3}), 3.0, 1e-12);   // x face at -1
+  EXPECT_NEAR(turned.SurfaceDistance({1, 2.5, 3}), 0.5, 1e-12);  // inside, y walls at 1 and 3
 }
 
 TEST(BoxPrimitive, RandomRaysAgreeWithInsideMarch) {
-  const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()) *
-                             Eigen::AngleAxisd(-0.7, Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()))
-                                .toRotationMatrix();
+  const Eigen::Matrix3d R =
+      (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(-0.7, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   const Eigen::Vector3d center(0.5, -1.0, 2.0);
   const Eigen::Vector3d half(1.5, 0.75, 1.0);
   const BoxPrimitive box(center, 2.0 * half, R);
@@ -124,8 +124,7 @@ TEST(BoxPrimitive, RandomRaysAgreeWithInsideMarch) {
 TEST(BoxPrimitive, RejectsNonPositiveSize) {
   EXPECT_THROW(BoxPrimitive({0, 0, 0}, {1, 0, 1}), std::invalid_argument);
   EXPECT_THROW(BoxPrimitive({0, 0, 0}, {1, -1, 1}), std::invalid_argument);
-  EXPECT_THROW(BoxPrimitive({0, 0, 0}, {1, 1, 1}, 2.0 * Eigen::Matrix3d::Identity()),
-               std::invalid_argument);
+  EXPECT_THROW(BoxPrimitive({0, 0, 0}, {1, 1, 1}, 2.0 * Eigen::Matrix3d::Identity()), std::invalid_argument);
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ TEST(CylinderPrimitive, MissesAndRangeWindow) {
   EXPECT_FALSE(post.Intersect(MakeRay({-5, 0, 2.5}, {1, 0, 0}), 0.0, 100.0));  // above
   EXPECT_FALSE(post.Intersect(MakeRay({-5, 1.2, 1}, {1, 0, 0}), 0.0, 100.0));  // beside
   EXPECT_FALSE(post.Intersect(MakeRay({1.5, 0, 5}, {0, 0, -1}), 0.0, 100.0));  // parallel, outside
-  const Ray ray = MakeRay({-5, 0, 1}, {1, 0, 0});  // enters at 4, leaves at 6
+  const Ray ray = MakeRay({-5, 0, 1}, {1, 0, 0});                              // enters at 4, leaves at 6
   EXPECT_FALSE(post.Intersect(ray, 0.0, 3.9));
   const auto leave = post.Intersect(ray, 4.0, 100.0);
   ASSERT_TRUE(leave.has_value());
@@ -105,8 +105,7 @@ TEST(CylinderPrimitive, RandomRaysAgreeWithInsideMarch) {
     return s >= 0.0 && s <= height && (p - base - s * axis).norm() <= radius;
   };
   const test::MarchStats stats = test::ExpectHitsMatchInsideMarch(
-      cylinder, inside,
-      Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-3), Eigen::Vector3d::Constant(4)), 400, 5);
+      cylinder, inside, Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-3), Eigen::Vector3d::Constant(4)), 400, 5);
   EXPECT_GT(stats.hits_from_outside, 100);
   EXPECT_GT(stats.hits_from_inside, 5);
 }

@@ -27,7 +27,7 @@ TEST(EncoderSimulator, QuantisesToTheNearestCount) {
   EXPECT_DOUBLE_EQ(EncoderSimulator::Quantise(10.4 * res, res), 10 * res);
   EXPECT_DOUBLE_EQ(EncoderSimulator::Quantise(10.6 * res, res), 11 * res);
   EXPECT_DOUBLE_EQ(EncoderSimulator::Quantise(kTwoPi - 0.2 * res, res), 0.0);  // rounds up to 2 pi = 0
-  EXPECT_DOUBLE_EQ(EncoderSimulator::Quantise(1.2345, 0.0), 1.2345);          // no quantisation
+  EXPECT_DOUBLE_EQ(EncoderSimulator::Quantise(1.2345, 0.0), 1.2345);           // no quantisation
   for (double a = -20.0; a < 20.0; a += 0.0137) {
     const double q = EncoderSimulator::Quantise(a, res);
     ASSERT_GE(q, 0.0);
@@ -43,7 +43,7 @@ TEST(EncoderSimulator, TurnsAtTheMotorRate) {
   EXPECT_DOUBLE_EQ(enc.SampleTime(250), 2.5);
   EXPECT_NEAR(enc.TrueAngle(0.0), 0.5, 1e-15);
   EXPECT_NEAR(enc.TrueAngle(1.0) - enc.TrueAngle(0.0), M_PI, 1e-12);  // 30 rpm = half a turn per second
-  EXPECT_NEAR(enc.Measure(2.0).angle_rad, 0.5, 1e-12);                  // one full turn later
+  EXPECT_NEAR(enc.Measure(2.0).angle_rad, 0.5, 1e-12);                // one full turn later
   EXPECT_DOUBLE_EQ(enc.Measure(2.0).time_s, 2.0);
 }
 

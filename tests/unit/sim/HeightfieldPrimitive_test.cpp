@@ -28,8 +28,8 @@ HeightfieldPrimitive Rolling() {
 
 // Analytic h and its unit normal (-h_x, -h_y, 1) / norm for Rolling().
 double RollingHeight(double x, double y, Eigen::Vector3d* normal) {
-  const double h = 0.5 + 0.3 * std::sin(0.5 * x + 0.1) * std::cos(0.3 * y - 0.2) +
-                   0.1 * std::sin(1.7 * x) * std::cos(1.1 * y + 0.4);
+  const double h =
+      0.5 + 0.3 * std::sin(0.5 * x + 0.1) * std::cos(0.3 * y - 0.2) + 0.1 * std::sin(1.7 * x) * std::cos(1.1 * y + 0.4);
   const double hx = 0.3 * 0.5 * std::cos(0.5 * x + 0.1) * std::cos(0.3 * y - 0.2) +
                     0.1 * 1.7 * std::cos(1.7 * x) * std::cos(1.1 * y + 0.4);
   const double hy = -0.3 * 0.3 * std::sin(0.5 * x + 0.1) * std::sin(0.3 * y - 0.2) -
@@ -40,8 +40,7 @@ double RollingHeight(double x, double y, Eigen::Vector3d* normal) {
 
 // Brute force: the first sign change of z(t) - h(x(t), y(t)) over (t_min, t_max]
 // sampled every `step` inside the rectangle, as the bracket [t_k, t_k+1].
-std::optional<std::pair<double, double>> MarchFirstCrossing(const Ray& ray, double t_min,
-                                                            double t_max, double step) {
+std::optional<std::pair<double, double>> MarchFirstCrossing(const Ray& ray, double t_min, double t_max, double step) {
   const auto in_rectangle = [](const Eigen::Vector3d& p) {
     return std::abs(p.x() - 1.0) <= 10.0 && std::abs(p.y() + 1.0) <= 8.0;
   };
@@ -215,8 +214,7 @@ TEST(HeightfieldPrimitive, BoundsCoverTheAmplitudes) {
 TEST(HeightfieldPrimitive, RejectsBadShape) {
   EXPECT_THROW(HeightfieldPrimitive({0, 0, 0}, {0, 1}, 0.0, {}), std::invalid_argument);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(HeightfieldPrimitive({0, 0, 0}, {1, 1}, 0.0, {Wave{nan, 1, 1, 0, 0}}),
-               std::invalid_argument);
+  EXPECT_THROW(HeightfieldPrimitive({0, 0, 0}, {1, 1}, 0.0, {Wave{nan, 1, 1, 0, 0}}), std::invalid_argument);
 }
 
 }  // namespace

@@ -164,9 +164,9 @@ Nominal Step(const Nominal& x, const Nominal& d, double h) {
 // k+2 are the stage times t, t + h/2, t + h) from the analytic start state
 // reproduce the trajectory: under 1 cm after 60 s of motion.
 TEST(ImuSimulator, NoiseFreeReadingsIntegrateBackToTheTrajectory) {
-  std::vector<Waypoint> w = {{Eigen::Vector3d(0, 0, 1), 0.0, 0.0},     {Eigen::Vector3d(10, 1, 2), 0.5, 2.0},
-                             {Eigen::Vector3d(12, 6, 1), 2.0, 0.0},    {Eigen::Vector3d(3, 8, 3), 3.0, 1.0},
-                             {Eigen::Vector3d(-2, 0, 1), 6.0, 0.0},    {Eigen::Vector3d(6, -3, 2), 4.0, 0.0},
+  std::vector<Waypoint> w = {{Eigen::Vector3d(0, 0, 1), 0.0, 0.0},  {Eigen::Vector3d(10, 1, 2), 0.5, 2.0},
+                             {Eigen::Vector3d(12, 6, 1), 2.0, 0.0}, {Eigen::Vector3d(3, 8, 3), 3.0, 1.0},
+                             {Eigen::Vector3d(-2, 0, 1), 6.0, 0.0}, {Eigen::Vector3d(6, -3, 2), 4.0, 0.0},
                              {Eigen::Vector3d(0, 0, 1), 0.0, 10.0}};
   WaypointTrajectoryOptions o;
   o.max_speed_m_s = 1.5;

@@ -10,7 +10,8 @@ namespace unimap::sim {
 namespace {
 
 TEST(LidarPoseTrack, InterpolatedPosesMatchExactOnesWithinAMicrometre) {
-  LidarPoseTrack track(test::MovingBody, [](double t) { return test::RotatingMount(t); }, 1e-3);
+  LidarPoseTrack track(
+      test::MovingBody, [](double t) { return test::RotatingMount(t); }, 1e-3);
   const double start = 1.234, end = start + 0.01875;  // one Hokuyo line
   track.Prepare(start, end);
   Eigen::Quaterniond q;
@@ -27,7 +28,8 @@ TEST(LidarPoseTrack, InterpolatedPosesMatchExactOnesWithinAMicrometre) {
 }
 
 TEST(LidarPoseTrack, ZeroKnotIntervalIsExact) {
-  LidarPoseTrack track(test::MovingBody, [](double t) { return test::RotatingMount(t); }, 0.0);
+  LidarPoseTrack track(
+      test::MovingBody, [](double t) { return test::RotatingMount(t); }, 0.0);
   track.Prepare(0.0, 0.1);
   Eigen::Quaterniond q;
   Eigen::Vector3d p;

@@ -46,8 +46,8 @@ TEST(LineScannerSimulator, MovingBodyWithPoseKnotsStaysWithinMicrometers) {
   const test::BoxRoom room;
   const World world = room.MakeWorld();
   const MountQuery mount = [](double t) { return test::RotatingMount(t); };
-  LineScannerSimulator scanner(world, LidarPoseTrack(test::MovingBody, mount, 1e-3), LineScannerPattern{},
-                               LidarNoise{}, 1);
+  LineScannerSimulator scanner(world, LidarPoseTrack(test::MovingBody, mount, 1e-3), LineScannerPattern{}, LidarNoise{},
+                               1);
   for (double start : {0.5, 1.0, 2.475}) {
     const LineScan line = std::get<LineScan>(scanner.Simulate(start));
     ExpectAnalyticRanges(line, room, test::MovingBody, mount, 5e-6);
@@ -108,7 +108,8 @@ TEST(LineScannerSimulator, NoiseAndDropoutsMatchTheirSettings) {
       const double t = line.start_time_s + static_cast<double>(i) * line.time_increment_s;
       const Eigen::Isometry3d T = body(t) * mount(t);
       const double a = line.angle_min_rad + static_cast<double>(i) * line.angle_increment_rad;
-      const double e = line.ranges_m[i] - room.RangeFrom(T.translation(), T.linear() * Eigen::Vector3d(std::cos(a), std::sin(a), 0));
+      const double e =
+          line.ranges_m[i] - room.RangeFrom(T.translation(), T.linear() * Eigen::Vector3d(std::cos(a), std::sin(a), 0));
       sum += e;
       sum_sq += e * e;
     }

@@ -41,7 +41,7 @@ TEST(PlanePrimitive, MissesOutsideTheRectangleAndWhenParallel) {
   EXPECT_FALSE(floor.Intersect(MakeRay({2.1, 0, 5}, {0, 0, -1}), 0.0, 100.0));
   EXPECT_FALSE(floor.Intersect(MakeRay({0, 1.1, 5}, {0, 0, -1}), 0.0, 100.0));
   EXPECT_FALSE(floor.Intersect(MakeRay({0, 0, 5}, {0, 0, 1}), 0.0, 100.0));      // away
-  EXPECT_FALSE(floor.Intersect(MakeRay({-5, 0, 1.5}, {1, 0, 0}), 0.0, 100.0));  // parallel
+  EXPECT_FALSE(floor.Intersect(MakeRay({-5, 0, 1.5}, {1, 0, 0}), 0.0, 100.0));   // parallel
   EXPECT_TRUE(floor.Intersect(MakeRay({2.0, 1.0, 5}, {0, 0, -1}), 0.0, 100.0));  // corner counts
 }
 
@@ -71,24 +71,24 @@ TEST(PlanePrimitive, RolledWallStandsInTheXZPlane) {
 
 TEST(PlanePrimitive, SurfaceDistanceMatchesClosedForm) {
   const PlanePrimitive floor = Floor();
-  EXPECT_NEAR(floor.SurfaceDistance({1, 0.5, 3}), 2.0, 1e-12);                  // above
-  EXPECT_NEAR(floor.SurfaceDistance({1, 0.5, -1}), 2.0, 1e-12);                 // below
-  EXPECT_NEAR(floor.SurfaceDistance({5, 0, 1}), 3.0, 1e-12);                    // beside, in plane
+  EXPECT_NEAR(floor.SurfaceDistance({1, 0.5, 3}), 2.0, 1e-12);                        // above
+  EXPECT_NEAR(floor.SurfaceDistance({1, 0.5, -1}), 2.0, 1e-12);                       // below
+  EXPECT_NEAR(floor.SurfaceDistance({5, 0, 1}), 3.0, 1e-12);                          // beside, in plane
   EXPECT_NEAR(floor.SurfaceDistance({5, 2, 5}), std::sqrt(9.0 + 1.0 + 16.0), 1e-12);  // off a corner
   EXPECT_NEAR(floor.SurfaceDistance({0.3, -0.2, 1}), 0.0, 1e-12);
 }
 
 TEST(PlanePrimitive, RandomRaysHitPointsLieOnTheRectangle) {
-  const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) *
-                             Eigen::AngleAxisd(-0.9, Eigen::Vector3d::UnitY()))
-                                .toRotationMatrix();
+  const Eigen::Matrix3d R =
+      (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(-0.9, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   const Eigen::Vector3d center(1, 2, 3);
   const PlanePrimitive plane(center, {3, 1.5}, R);
   std::mt19937 rng(11);
   int hits = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Ray ray = test::RandomRay(Eigen::AlignedBox3d(center.array() - 3, center.array() + 3),
-                                    plane.Bounds(), i, &rng);
+    const Ray ray =
+        test::RandomRay(Eigen::AlignedBox3d(center.array() - 3, center.array() + 3), plane.Bounds(), i, &rng);
     // Closed form in the plane frame: t = -o_z / d_z, inside when |x| <= 1.5 and |y| <= 0.75.
     const Eigen::Vector3d o = R.transpose() * (ray.origin - center);
     const Eigen::Vector3d d = R.transpose() * ray.direction;

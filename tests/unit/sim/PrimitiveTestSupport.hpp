@@ -5,8 +5,8 @@
 #include <functional>
 #include <random>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "Primitive.hpp"
 #include "Ray.hpp"
@@ -28,8 +28,7 @@ inline Eigen::Vector3d RandomPoint(const Eigen::AlignedBox3d& box, std::mt19937*
 
 // Ray i from a random point of `origins`: even i aim at a random point of
 // `targets` (so that many hit), odd i point in a random direction.
-inline Ray RandomRay(const Eigen::AlignedBox3d& origins, const Eigen::AlignedBox3d& targets, int i,
-                     std::mt19937* rng) {
+inline Ray RandomRay(const Eigen::AlignedBox3d& origins, const Eigen::AlignedBox3d& targets, int i, std::mt19937* rng) {
   Ray ray;
   ray.origin = RandomPoint(origins, rng);
   const Eigen::Vector3d toward = RandomPoint(targets, rng) - ray.origin;
@@ -43,14 +42,13 @@ struct MarchStats {
   int hits_from_inside = 0;   // rays starting inside (all must hit)
 };
 
-// For `rays` random rays (RandomRay, targets = the primitive's bounds) with origins in `origins`: Intersect(ray, 0, max_range)
-// must agree with a march of the inside test at step 1e-3 m (no status change
-// before the hit, a change across it, none at all on a miss); the hit point
-// must lie on the surface (SurfaceDistance < 1e-9), and the normal must be unit
-// length, face against the ray and separate inside from outside.
-inline MarchStats ExpectHitsMatchInsideMarch(
-    const Primitive& primitive, const std::function<bool(const Eigen::Vector3d&)>& inside,
-    const Eigen::AlignedBox3d& origins, int rays, unsigned seed) {
+// For `rays` random rays (RandomRay, targets = the primitive's bounds) with origins in `origins`: Intersect(ray, 0,
+// max_range) must agree with a march of the inside test at step 1e-3 m (no status change before the hit, a change
+// across it, none at all on a miss); the hit point must lie on the surface (SurfaceDistance < 1e-9), and the normal
+// must be unit length, face against the ray and separate inside from outside.
+inline MarchStats ExpectHitsMatchInsideMarch(const Primitive& primitive,
+                                             const std::function<bool(const Eigen::Vector3d&)>& inside,
+                                             const Eigen::AlignedBox3d& origins, int rays, unsigned seed) {
   constexpr double kMaxRange = 20.0;
   constexpr double kStep = 1e-3;
   std::mt19937 rng(seed);

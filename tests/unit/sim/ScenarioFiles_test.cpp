@@ -148,9 +148,9 @@ TEST(ScenarioFiles, CorridorLoopIsA40By20LoopTwoMetersWide) {
   }
   std::sort(widths.begin(), widths.end());
   EXPECT_NEAR(widths[widths.size() / 2], 2.0, 1e-9);  // median: plain corridor
-  EXPECT_GE(widths.front(), 1.95);                     // doors stand 4 cm proud
-  EXPECT_GE(widths.back(), 2.9);                       // alcoves add 1 m
-  EXPECT_NEAR(path_box.sizes().x(), 38.0, 1e-9);       // centre line of a 40 m x 20 m loop
+  EXPECT_GE(widths.front(), 1.95);                    // doors stand 4 cm proud
+  EXPECT_GE(widths.back(), 2.9);                      // alcoves add 1 m
+  EXPECT_NEAR(path_box.sizes().x(), 38.0, 1e-9);      // centre line of a 40 m x 20 m loop
   EXPECT_NEAR(path_box.sizes().y(), 18.0, 1e-9);
   EXPECT_LE(traj.MaxSpeed(traj.end_time_s()), 1.2 + 1e-12);
   EXPECT_LT((traj.At(traj.end_time_s()).position_m - traj.At(0.0).position_m).norm(), 1e-12);

@@ -76,8 +76,8 @@ TEST(ScenarioVariant, ImuScalesMultiplyNoiseBiasesAndWalks) {
 }
 
 TEST(ScenarioVariant, NonPositiveOrNonFiniteScalesAreConfigErrorsNamingTheOption) {
-  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::infinity()}) {
+  for (const double bad :
+       {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     ScenarioVariant v;
     v.imu_noise_scale = bad;
     try {

@@ -122,9 +122,7 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(e.key(), "world");
 }
 
-TEST(Scenario, MissingFileIsAConfigError) {
-  EXPECT_THROW(LoadScenario("/nonexistent/scenario.yaml"), ConfigError);
-}
+TEST(Scenario, MissingFileIsAConfigError) { EXPECT_THROW(LoadScenario("/nonexistent/scenario.yaml"), ConfigError); }
 
 }  // namespace
 }  // namespace unimap::sim

@@ -111,11 +111,11 @@ TEST_P(SimulatorPayloadTest, DatasetIsConsistentWithTheWorldAndTheTruth) {
   double worst = 0.0;
   while (auto record = reader.NextScan()) {
     ++scans;
-    const RawScan raw = std::holds_alternative<LineScan>(*record)
-                            ? LineScanToRawScan(std::get<LineScan>(*record)).scan
-                            : std::get<RawScan>(*record);
+    const RawScan raw = std::holds_alternative<LineScan>(*record) ? LineScanToRawScan(std::get<LineScan>(*record)).scan
+                                                                  : std::get<RawScan>(*record);
     for (const Point& p : raw.points) {
-      const Eigen::Vector3d p_world = PoseAt(truth, p.time_s) * plugin.BodyFromLidarAt(encoder, p.time_s) * p.position_m;
+      const Eigen::Vector3d p_world =
+          PoseAt(truth, p.time_s) * plugin.BodyFromLidarAt(encoder, p.time_s) * p.position_m;
       worst = std::max(worst, world.SurfaceDistance(p_world));
       ++points;
     }

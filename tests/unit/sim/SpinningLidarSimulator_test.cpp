@@ -58,7 +58,9 @@ TEST(SpinningLidarSimulator, CounterClockwiseHeadsIncreaseAzimuth) {
   SpinningLidarPattern pattern = Vlp16(2.0);
   pattern.clockwise = false;
   pattern.rings = 1;
-  SpinningLidarSimulator lidar(world, LidarPoseTrack(body, [](double) { return Eigen::Isometry3d::Identity(); }, 0.0),
+  SpinningLidarSimulator lidar(world,
+                               LidarPoseTrack(
+                                   body, [](double) { return Eigen::Isometry3d::Identity(); }, 0.0),
                                pattern, LidarNoise{}, 1);
   const RawScan scan = std::get<RawScan>(lidar.Simulate(0.0));
   ASSERT_EQ(scan.points.size(), 180u);

@@ -42,16 +42,14 @@ World RandomWorld(int n, unsigned seed) {
     const Eigen::Vector3d c(x(rng), y(rng), z(rng));
     switch (i % 5) {
       case 0:
-        world.Add(std::make_unique<BoxPrimitive>(c, Eigen::Vector3d(size(rng), size(rng), size(rng)),
-                                                 RandomRotation(&rng)));
+        world.Add(
+            std::make_unique<BoxPrimitive>(c, Eigen::Vector3d(size(rng), size(rng), size(rng)), RandomRotation(&rng)));
         break;
       case 1:
-        world.Add(std::make_unique<PlanePrimitive>(c, Eigen::Vector2d(size(rng), size(rng)),
-                                                   RandomRotation(&rng)));
+        world.Add(std::make_unique<PlanePrimitive>(c, Eigen::Vector2d(size(rng), size(rng)), RandomRotation(&rng)));
         break;
       case 2:
-        world.Add(std::make_unique<CylinderPrimitive>(c, test::RandomDirection(&rng),
-                                                      0.3 * size(rng), size(rng)));
+        world.Add(std::make_unique<CylinderPrimitive>(c, test::RandomDirection(&rng), 0.3 * size(rng), size(rng)));
         break;
       case 3:
         world.Add(std::make_unique<SpherePrimitive>(c, 0.5 * size(rng)));
@@ -68,8 +66,7 @@ World RandomWorld(int n, unsigned seed) {
 }
 
 // The nearest hit over every primitive, without the BVH.
-std::optional<RayHit> BruteForceCast(const World& world, const Ray& ray, double min_range,
-                                     double max_range) {
+std::optional<RayHit> BruteForceCast(const World& world, const Ray& ray, double min_range, double max_range) {
   std::optional<RayHit> best;
   for (std::size_t i = 0; i < world.size(); ++i) {
     auto hit = world.primitive(i).Intersect(ray, min_range, max_range);
@@ -118,8 +115,8 @@ TEST(World, RoomWithAnObstacleReportsNearestPrimitive) {
   ASSERT_TRUE(over.has_value());
   EXPECT_EQ(over->primitive_index, 0);
   EXPECT_NEAR(over->range_m, 106.0, 1e-12);
-  EXPECT_FALSE(world.Cast(along, 0.0, 12.9));          // window closes before the car
-  const auto past = world.Cast(along, 13.0, 200.0);    // min is exclusive: the car's far side
+  EXPECT_FALSE(world.Cast(along, 0.0, 12.9));        // window closes before the car
+  const auto past = world.Cast(along, 13.0, 200.0);  // min is exclusive: the car's far side
   ASSERT_TRUE(past.has_value());
   EXPECT_NEAR(past->range_m, 23.0, 1e-12);
   EXPECT_NEAR(world.SurfaceDistance({2, 0, 1}), 1.0, 1e-12);     // the floor
@@ -195,9 +192,9 @@ TEST(World, RebuildAfterAddingIncludesTheNewPrimitive) {
   world.Build();
   const Ray ray{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()};
   EXPECT_NEAR(world.Cast(ray, 0.0, 100.0)->range_m, 9.0, 1e-12);
-  world.Add(std::make_unique<PlanePrimitive>(Eigen::Vector3d(4, 0, 0), Eigen::Vector2d(2, 2),
-                                             Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitY())
-                                                 .toRotationMatrix()));
+  world.Add(std::make_unique<PlanePrimitive>(
+      Eigen::Vector3d(4, 0, 0), Eigen::Vector2d(2, 2),
+      Eigen::AngleAxisd(1.5707963267948966, Eigen::Vector3d::UnitY()).toRotationMatrix()));
   world.Build();
   const auto hit = world.Cast(ray, 0.0, 100.0);
   ASSERT_TRUE(hit.has_value());
