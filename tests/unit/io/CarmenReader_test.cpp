@@ -63,7 +63,7 @@ LogCounts ReadAll(CarmenReader* reader) {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// ---- The real logs: counts from ../shared/data/README.md (and the files).
+// ---- The real logs: counts from the data set's own README (and the files).
 
 TEST(CarmenReaderTest, IntelLogHas13631ScansOf180BeamsAnd26915Odom) {
   const fs::path log = Radish("intel.clf.bz2");
