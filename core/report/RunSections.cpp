@@ -80,6 +80,8 @@ Json Cards(const Json& run, const Json& metrics) {
       {&metrics, {"ate_rmse_m"}},
       {&run, {"position_rmse_m"}},
       {&metrics, {"map_error_aligned_mean_m"}},
+      {&run, {"mapping", "map_quality", "mean_plane_variance_m2"}},
+      {&run, {"mapping", "map_quality", "mean_map_entropy"}},
   };
   Json out = Json::array();
   for (const Card& card : cards) {

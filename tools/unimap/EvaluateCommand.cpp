@@ -11,9 +11,13 @@
 
 #include "Commands.hpp"
 #include "FolderReport.hpp"
+#include "Json.hpp"
 #include "MapEvaluation.hpp"
+#include "MapQualityMetrics.hpp"
 #include "TextTable.hpp"
+#include "eval/AtomicFile.hpp"
 #include "eval/EvaluationReport.hpp"
+#include "eval/MapQuality.hpp"
 #include "eval/MetricRows.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
 #include "io/TumTrajectory.hpp"
@@ -48,8 +52,39 @@ void RequirePositive(const char* option, double value) {
   }
 }
 
+// Without a trajectory: the map's GT-free quality, printed and written to
+// OUT/metrics.json (OUT: --out, else the map's folder).
+int EvaluateMapOnly(const EvaluateOptions& options) {
+  const std::vector<Eigen::Vector3f> points = LoadMapPoints(options.map_file);
+  const std::vector<eval::ExtraMetric> metrics = MapQualityMetrics(eval::ComputeMapQuality(points));
+  const std::filesystem::path out_dir = options.out_dir.empty()
+                                            ? std::filesystem::absolute(options.map_file).parent_path()
+                                            : std::filesystem::path(options.out_dir);
+  std::cout << "map:      " << options.map_file << "  (" << points.size() << " points; no ground truth)\n\n";
+  TextTable table({"metric", "value", "meaning"});
+  Json json = Json::object();
+  for (const eval::ExtraMetric& m : metrics) {
+    table.AddRow({m.row.key, m.row.value, m.row.meaning});
+    json[m.row.key] = m.value;
+  }
+  table.Print(std::cout);
+  std::filesystem::create_directories(out_dir);
+  eval::WriteFileAtomically(out_dir / "metrics.json", JsonText(json) + "\n");
+  std::cout << "\nwrote:\n  " << (out_dir / "metrics.json").string() << '\n';
+  return 0;
+}
+
 int RunEvaluate(const EvaluateOptions& options) {
   try {
+    if (options.estimate_file.empty() != options.truth_file.empty()) {
+      throw InputError(std::string(options.truth_file.empty() ? "--estimate" : "--truth") + " needs " +
+                       (options.truth_file.empty() ? "--truth" : "--estimate") +
+                       " (or give --map alone for the map's quality without ground truth)");
+    }
+    if (options.truth_file.empty()) {
+      if (options.map_file.empty()) throw InputError("nothing to evaluate: give --estimate and --truth, or --map");
+      return EvaluateMapOnly(options);
+    }
     RequirePositive("--max-time-diff-s", options.max_time_diff_s);
     RequirePositive("--segment-m", options.segment_m);
     const std::vector<StampedPose> estimate = ReadTrajectory(options.estimate_file, "estimate");
@@ -92,7 +127,12 @@ int RunEvaluate(const EvaluateOptions& options) {
     for (const eval::MetricRow& row : eval::DescribeMetrics(evaluation.metrics)) {
       table.AddRow({row.key, row.value, row.meaning});
     }
-    const eval::ReportExtras map_extras = map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{};
+    eval::ReportExtras map_extras = map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{};
+    if (!options.map_file.empty()) {  // its quality without the truth, with or without a world
+      for (eval::ExtraMetric& m : MapQualityMetrics(eval::ComputeMapQuality(LoadMapPoints(options.map_file)))) {
+        map_extras.metrics.push_back(std::move(m));
+      }
+    }
     for (const eval::ExtraMetric& m : map_extras.metrics) table.AddRow({m.row.key, m.row.value, m.row.meaning});
     table.Print(std::cout);
     const std::vector<std::filesystem::path> written = eval::WriteEvaluationReport(evaluation, out_dir, map_extras);
@@ -121,8 +161,10 @@ void AddEvaluateCommand(CLI::App* app) {
       "evaluate",
       "Compare an estimated trajectory with ground truth (and a map with the simulated world): metrics.json, "
       "PNG plots, report.html (interactive: unimap report)");
-  cmd->add_option("--estimate", options->estimate_file, "Estimated trajectory (TUM: t x y z qx qy qz qw)")->required();
-  cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM)")->required();
+  cmd->add_option("--estimate", options->estimate_file,
+                  "Estimated trajectory (TUM: t x y z qx qy qz qw); with --truth");
+  cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM); without it, --map alone is scored "
+                                                  "without ground truth (mean map entropy, plane variance)");
   cmd->add_option("--out", options->out_dir, "Output folder (default: the estimate's folder)");
   cmd->add_option("--map", options->map_file,
                   "Map to score against the world (.pcd or .ply, in the estimate's frame): map_error_* metrics");

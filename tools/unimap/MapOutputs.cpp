@@ -7,7 +7,9 @@
 
 #include <octomap/OcTree.h>
 
+#include "MapQualityMetrics.hpp"
 #include "eval/AtomicFile.hpp"
+#include "eval/MapQuality.hpp"
 #include "eval/TrajectoryErrors.hpp"
 #include "io/KittiTrajectoryWriter.hpp"
 #include "io/PcdWriter.hpp"
@@ -91,6 +93,7 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["loop_matchers_built"] = s.loop_search.matchers_built;
   o["map_points"] = points.size();
   o["map_voxel_m"] = options.map_voxel_m;
+  o["map_quality"] = MapQualityJson(eval::ComputeMapQuality(points));
   o["messages"] = s.messages;
   return o;
 }

@@ -76,6 +76,21 @@ case $case_name in
     grep -Eq '^\| narrow_hallway \| rotating_vlp16 \| nominal \| 0\.[0-9]{3} \| ' "$work/robustness.md" ||
       fail "no measured row for the case"
     grep -q "1 cases met\|0 of 1 cases met\|1 of 1 cases met" "$work/robustness.md" || fail "no summary line" ;;
+  evaluate_map_quality)
+    # A map alone, no ground truth: a noise-free 2 m x 2 m plane (0.05 m grid)
+    # is all planar with no thickness; the same plane doubled 0.15 m apart is not.
+    plane() { awk -v z="$1" 'BEGIN { for (i = 0; i < 40; i++) for (j = 0; j < 40; j++) print i * 0.05, j * 0.05, z }'; }
+    { printf 'ply\nformat ascii 1.0\nelement vertex 1600\nproperty float x\nproperty float y\nproperty float z\nend_header\n'
+      plane 0; } >"$work/$case_name.plane.ply"
+    code=$(run evaluate --map "$work/$case_name.plane.ply" --out "$work/$case_name.eval"); [ "$code" = 0 ] || fail "exit $code"
+    expect "^map_planar_share +1\.000 "; expect "^map_plane_variance_m2 +0\.000000 "; expect "^map_quality_points +1600 "
+    grep -Eq '^  "map_mean_entropy": -[0-9.e-]+,?$' "$work/$case_name.eval/metrics.json" || fail "metrics.json lacks the entropy"
+    { printf 'ply\nformat ascii 1.0\nelement vertex 3200\nproperty float x\nproperty float y\nproperty float z\nend_header\n'
+      plane 0; plane 0.15; } >"$work/$case_name.double.ply"
+    code=$(run evaluate --map "$work/$case_name.double.ply" --out "$work/$case_name.eval2"); [ "$code" = 0 ] || fail "exit $code"
+    expect "^map_planar_share +0\.[0-4][0-9]* "
+    code=$(run evaluate --estimate "$work/$case_name.plane.ply"); [ "$code" = 2 ] || fail "exit $code, expected 2"
+    expect "--estimate needs --truth" ;;
   evaluate_map)
     # A plane world z = 0; the estimate is the truth raised by 1 m, and so is
     # the map (map points live in the estimate's frame): unaligned errors are
