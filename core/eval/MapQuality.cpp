@@ -92,7 +92,9 @@ MapQuality ComputeMapQuality(const std::vector<Eigen::Vector3f>& points_map, con
   if (points_map.empty()) return quality;
   const CellIndex index(points_map, options.radius_m);
   const std::size_t stride =
-      options.max_points == 0 ? 1 : std::max<std::size_t>(1, (points_map.size() + options.max_points - 1) / options.max_points);
+      options.max_points == 0
+          ? 1
+          : std::max<std::size_t>(1, (points_map.size() + options.max_points - 1) / options.max_points);
   const double two_pi_e = 2.0 * M_PI * std::exp(1.0);
   double entropy_sum = 0.0;
   double plane_variance_sum = 0.0;

@@ -21,12 +21,12 @@ struct MapQualityOptions {
 };
 
 struct MapQuality {
-  std::size_t points = 0;            // map points
-  std::size_t evaluated = 0;         // of the evaluated subset, those with min_neighbors neighbours
-  double mean_map_entropy = 0.0;     // mean of 0.5 ln det(2 pi e Sigma) over evaluated points (nats; lower is crisper)
+  std::size_t points = 0;         // map points
+  std::size_t evaluated = 0;      // of the evaluated subset, those with min_neighbors neighbours
+  double mean_map_entropy = 0.0;  // mean of 0.5 ln det(2 pi e Sigma) over evaluated points (nats; lower is crisper)
   double mean_plane_variance_m2 = 0.0;  // mean smallest eigenvalue of Sigma: the variance across the local
                                         // surface (m^2; a wall of thickness noise sigma gives sigma^2)
-  double planar_share = 0.0;         // share of evaluated points whose neighbourhood is planar
+  double planar_share = 0.0;            // share of evaluated points whose neighbourhood is planar
 };
 
 // Sigma is the covariance of the points within radius_m of each evaluated

@@ -163,8 +163,9 @@ void AddEvaluateCommand(CLI::App* app) {
       "PNG plots, report.html (interactive: unimap report)");
   cmd->add_option("--estimate", options->estimate_file,
                   "Estimated trajectory (TUM: t x y z qx qy qz qw); with --truth");
-  cmd->add_option("--truth", options->truth_file, "Ground-truth trajectory (TUM); without it, --map alone is scored "
-                                                  "without ground truth (mean map entropy, plane variance)");
+  cmd->add_option("--truth", options->truth_file,
+                  "Ground-truth trajectory (TUM); without it, --map alone is scored "
+                  "without ground truth (mean map entropy, plane variance)");
   cmd->add_option("--out", options->out_dir, "Output folder (default: the estimate's folder)");
   cmd->add_option("--map", options->map_file,
                   "Map to score against the world (.pcd or .ply, in the estimate's frame): map_error_* metrics");
