@@ -1,5 +1,5 @@
 #pragma once
-// Real data (KITTI, CARMEN, ROS 1 bags) into the dataset format
+// Real data (KITTI, CARMEN, ROS 1 and ROS 2 bags) into the dataset format
 // (docs/dataset-format.md), streamed: `unimap convert` and tests call these.
 #include <atomic>
 #include <cstddef>
@@ -22,14 +22,14 @@ enum class CarmenOdometrySource {
 };
 
 struct ConversionOptions {
-  std::filesystem::path input;    // KITTI folder, CARMEN log, or bag file
+  std::filesystem::path input;    // KITTI folder, CARMEN log, ROS 1 bag file, ROS 2 bag folder or .db3
   std::filesystem::path output;   // dataset folder to write
   std::string payload;            // metadata payload name; empty = the format's default
   double reorder_window_s = 2.0;  // how late an item may arrive and still be put in time order
   KittiReaderOptions kitti;       // side files of a KITTI sequence
   CarmenReaderOptions carmen;     // FLASER beam layout
   CarmenOdometrySource carmen_odometry = CarmenOdometrySource::kAuto;
-  RosbagReaderOptions rosbag;               // topic choice
+  RosbagReaderOptions rosbag;               // topic choice (ROS 1 and ROS 2 bags), scalar angle unit
   const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): stop reading, finish the dataset
 };
 
@@ -52,6 +52,7 @@ struct ConversionReport {
 // (bad input, naming file and line / topic) or ConfigError.
 ConversionReport ConvertKitti(const ConversionOptions& options);
 ConversionReport ConvertCarmen(const ConversionOptions& options);
-ConversionReport ConvertRosbag(const ConversionOptions& options);
+ConversionReport ConvertRosbag(const ConversionOptions& options);   // throws InputError for a ROS 2 bag
+ConversionReport ConvertRos2Bag(const ConversionOptions& options);  // see Ros2BagReader
 
 }  // namespace unimap::io

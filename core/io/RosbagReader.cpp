@@ -1,8 +1,9 @@
 #include "io/RosbagReader.hpp"
 
-#include <algorithm>
-#include <sstream>
+#include <optional>
 
+#include "io/BagSupport.hpp"
+#include "io/Ros2BagMetadata.hpp"
 #include "io/RosbagRecords.hpp"
 #include "unimap/Errors.hpp"
 
@@ -19,6 +20,17 @@
 #endif
 
 namespace unimap::io {
+namespace {
+
+// A ROS 2 bag given to this reader: InputError saying which format reads it.
+void RejectRos2Bag(const std::filesystem::path& bag) {
+  if (IsRos2Bag(bag)) {
+    throw InputError(bag.string() +
+                     ": a ROS 2 bag (rosbag2 metadata.yaml or .db3 file): convert it with --format ros2");
+  }
+}
+
+}  // namespace
 
 #if UNIMAP_WITH_ROSBAG
 namespace {
@@ -38,15 +50,11 @@ double StampOr(const ros::Time& stamp, const rosbag::MessageInstance& m) {
   return stamp.isZero() ? m.getTime().toSec() : stamp.toSec();
 }
 
-// Pose from a ROS position and orientation; false for a quaternion that cannot be normalised.
+// Pose from a ROS position and orientation; false for a quaternion that cannot be normalized.
 bool ToIsometry(const geometry_msgs::Pose& pose, Eigen::Isometry3d* T) {
-  Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);
-  const double norm = q.norm();
-  if (!std::isfinite(norm) || norm < 1e-6) return false;
-  *T = Eigen::Isometry3d::Identity();
-  T->linear() = q.normalized().toRotationMatrix();
-  T->translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
-  return T->matrix().allFinite();
+  return PoseToIsometry(
+      Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z),
+      Eigen::Quaterniond(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z), T);
 }
 
 }  // namespace
@@ -65,12 +73,6 @@ class RosbagReader::Impl {
 
   [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
 
-  std::string TopicList() const {
-    std::ostringstream out;
-    for (const RosbagTopicInfo& t : topics) out << "\n  " << t.topic << " (" << t.datatype << ", " << t.messages << ")";
-    return out.str();
-  }
-
   const RosbagTopicInfo* Find(const std::string& topic) const {
     for (const RosbagTopicInfo& t : topics) {
       if (t.topic == topic) return &t;
@@ -81,26 +83,7 @@ class RosbagReader::Impl {
   // Resolves one stream's request (see RosbagTopics) to a topic or "".
   std::string Resolve(const std::string& request, const std::vector<std::string>& types, const char* option,
                       bool allow_auto) const {
-    auto accepted = [&](const std::string& type) { return std::find(types.begin(), types.end(), type) != types.end(); };
-    if (request == "none" || (request.empty() && !allow_auto)) return "";
-    if (!request.empty()) {
-      const RosbagTopicInfo* info = Find(request);
-      if (info == nullptr) Fail("no topic " + request + " in the bag; its topics:" + TopicList());
-      if (!accepted(info->datatype)) {
-        Fail("topic " + request + " is " + info->datatype + ", not usable for " + option +
-             "; its topics:" + TopicList());
-      }
-      return request;
-    }
-    std::vector<std::string> candidates;
-    for (const RosbagTopicInfo& t : topics) {
-      if (accepted(t.datatype) && t.topic != selected.groundtruth) candidates.push_back(t.topic);
-    }
-    if (candidates.size() > 1) {
-      Fail("several " + types.front() + " topics; choose one with " + option +
-           " (or 'none'); its topics:" + TopicList());
-    }
-    return candidates.empty() ? "" : candidates.front();
+    return ResolveBagTopic(label, topics, request, types, option, allow_auto, selected.groundtruth);
   }
 
   void ListTopics() {
@@ -123,6 +106,9 @@ class RosbagReader::Impl {
     selected.imu = Resolve(request.imu, {kImu}, "--imu-topic", true);
     selected.joint = Resolve(request.joint, {kJointState}, "--joint-topic", true);
     selected.odometry = Resolve(request.odometry, {kOdometry}, "--odometry-topic", true);
+    if (!request.angle.empty() && request.angle != "none") {
+      Fail("--angle-topic " + request.angle + ": scalar angle topics are read from ROS 2 bags only (--format ros2)");
+    }
     const std::pair<const std::string*, Stream> choices[] = {
         {&selected.cloud, Stream::kCloud},       {&selected.laser, Stream::kLaser},
         {&selected.imu, Stream::kImu},           {&selected.joint, Stream::kJoint},
@@ -165,28 +151,17 @@ class RosbagReader::Impl {
           stats.dropped_points += decoded.dropped;
           out->data = std::move(decoded.scan);
         } catch (const InputError& e) {
-          std::ostringstream where;
-          where.precision(17);
-          where << out->topic << " at t=" << stamp << ": " << e.what();
-          Fail(where.str());
+          throw InputError(BagMessageError(label, out->topic, stamp, e.what()));
         }
         return true;
       }
       case Stream::kLaser: {
         auto scan = m.instantiate<sensor_msgs::LaserScan>();
         if (!scan) return Skip(out->topic + ": message definition differs from sensor_msgs/LaserScan");
-        LineScan line;
-        line.start_time_s = StampOr(scan->header.stamp, m);
-        out->stamp_s = line.start_time_s;
-        line.angle_min_rad = scan->angle_min;
-        line.angle_increment_rad = scan->angle_increment;
-        line.time_increment_s = scan->time_increment;
-        line.range_min_m = scan->range_min;
-        line.range_max_m = scan->range_max;
-        line.ranges_m = scan->ranges;
-        if (scan->intensities.size() == scan->ranges.size()) line.intensities = scan->intensities;
-        if (line.ranges_m.empty()) return Skip(out->topic + ": LaserScan without beams");
-        out->data = std::move(line);
+        out->stamp_s = StampOr(scan->header.stamp, m);
+        std::optional<LineScan> line = ToLineScan(*scan, out->stamp_s);
+        if (!line) return Skip(out->topic + ": LaserScan without beams");
+        out->data = std::move(*line);
         return true;
       }
       case Stream::kImu: {
@@ -206,17 +181,11 @@ class RosbagReader::Impl {
       case Stream::kJoint: {
         auto joints = m.instantiate<sensor_msgs::JointState>();
         if (!joints) return Skip(out->topic + ": message definition differs from sensor_msgs/JointState");
-        std::size_t index = 0;
-        if (!options.joint_name.empty()) {
-          const auto found = std::find(joints->name.begin(), joints->name.end(), options.joint_name);
-          if (found == joints->name.end()) return Skip(out->topic + ": JointState without joint " + options.joint_name);
-          index = static_cast<std::size_t>(found - joints->name.begin());
-        }
-        if (index >= joints->position.size() || !std::isfinite(joints->position[index])) {
-          return Skip(out->topic + ": JointState without a finite position");
-        }
+        std::string reason;
+        const std::optional<double> angle = JointAngle(joints->name, joints->position, options.joint_name, &reason);
+        if (!angle) return Skip(out->topic + ": " + reason);
         out->stamp_s = StampOr(joints->header.stamp, m);
-        out->data = EncoderSample{out->stamp_s, joints->position[index]};
+        out->data = EncoderSample{out->stamp_s, *angle};
         return true;
       }
       case Stream::kOdometry:
@@ -251,6 +220,7 @@ RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions
     : impl_(std::make_unique<Impl>()) {
   impl_->label = bag.string();
   impl_->options = std::move(options);
+  RejectRos2Bag(bag);
   try {
     CheckRosbagRecords(bag);  // librosbag allocates the lengths it reads unchecked
     impl_->bag.open(impl_->label, rosbag::bagmode::Read);
@@ -298,6 +268,7 @@ class RosbagReader::Impl {
 };
 
 RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions /*options*/) {
+  RejectRos2Bag(bag);
   throw InputError(bag.string() +
                    ": this build of unimap cannot read ROS bags (configured without UNIMAP_WITH_ROSBAG; install "
                    "librosbag-storage-dev, libsensor-msgs-dev and libnav-msgs-dev, see scripts/install-deps.sh)");

@@ -1,63 +1,12 @@
 #pragma once
-#include <cstddef>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
-#include <string>
-#include <variant>
 #include <vector>
 
-#include "io/PointCloud2Decoder.hpp"
-#include "unimap/EncoderSample.hpp"
-#include "unimap/ImuSample.hpp"
-#include "unimap/LineScan.hpp"
-#include "unimap/OdometrySample.hpp"
-#include "unimap/RawScan.hpp"
-#include "unimap/StampedPose.hpp"
+#include "io/BagTypes.hpp"
 
 namespace unimap::io {
-
-// Topic per stream: "" = the one topic of that message type in the bag
-// (none if the bag has none; an error if it has several), "none" = not read,
-// anything else = that topic (an error if absent or of another type).
-struct RosbagTopics {
-  std::string cloud;                 // sensor_msgs/PointCloud2 -> RawScan
-  std::string laser;                 // sensor_msgs/LaserScan -> LineScan
-  std::string imu;                   // sensor_msgs/Imu -> ImuSample
-  std::string joint;                 // sensor_msgs/JointState -> EncoderSample (motor angle)
-  std::string odometry;              // nav_msgs/Odometry -> OdometrySample
-  std::string groundtruth = "none";  // nav_msgs/Odometry or geometry_msgs/PoseStamped -> StampedPose; never auto
-};
-
-struct RosbagReaderOptions {
-  RosbagTopics topics;     // which topics to read
-  std::string joint_name;  // JointState: joint whose position is the motor angle; empty = the first
-};
-
-// A bag topic, as listed in the bag's index.
-struct RosbagTopicInfo {
-  std::string topic;
-  std::string datatype;      // e.g. "sensor_msgs/PointCloud2"
-  std::size_t messages = 0;  // messages on the topic
-};
-
-// One message turned into unimap's types; times are header stamps (the
-// bag's receive time when a header stamp is zero).
-struct RosbagMessage {
-  std::string topic;
-  double stamp_s = 0.0;  // header stamp (or receive time, see above)
-  std::variant<RawScan, LineScan, ImuSample, EncoderSample, OdometrySample, StampedPose> data;
-  std::size_t dropped_points = 0;                                    // clouds: points with non-finite fields left out
-  PointTimeConvention time_convention = PointTimeConvention::kNone;  // clouds: how point times were read
-};
-
-// What the reader has delivered and skipped so far.
-struct RosbagReaderStats {
-  std::map<std::string, std::size_t> delivered;  // topic -> messages delivered
-  std::map<std::string, std::size_t> skipped;    // reason -> messages skipped
-  std::size_t dropped_points = 0;                // cloud points left out (non-finite)
-};
 
 // Streams a ROS 1 bag (format 2.0; uncompressed, bz2 or lz4 chunks) through
 // librosbag_storage, in bag order, one message at a time. Needs a build with

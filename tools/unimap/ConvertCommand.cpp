@@ -1,4 +1,4 @@
-// `unimap convert`: KITTI, CARMEN and ROS 1 bag data into the dataset format.
+// `unimap convert`: KITTI, CARMEN, ROS 1 and ROS 2 bag data into the dataset format.
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -18,9 +18,10 @@ namespace {
 
 struct ConvertOptions {
   io::ConversionOptions conversion;      // input, output, payload and per-format options
-  std::string format;                    // kitti | carmen | rosbag
+  std::string format;                    // kitti | carmen | rosbag | ros2
   std::string carmen_odometry = "auto";  // auto | odom | flaser
   double carmen_fov_deg = 180.0;         // FLASER beams span
+  std::string angle_unit;                // ros2 scalar angle topic: deg | rad; "" = not given
 };
 
 void PrintReport(const std::string& format, const io::ConversionReport& report, std::ostream& out) {
@@ -54,8 +55,13 @@ int RunConvert(ConvertOptions options) {
           {"flaser", io::CarmenOdometrySource::kLaserFields}};
       c.carmen_odometry = sources.at(options.carmen_odometry);
       report = io::ConvertCarmen(c);
-    } else {
+    } else if (options.format == "rosbag") {
       report = io::ConvertRosbag(c);
+    } else {
+      const std::map<std::string, io::AngleUnit> units = {
+          {"", io::AngleUnit::kUnset}, {"deg", io::AngleUnit::kDegrees}, {"rad", io::AngleUnit::kRadians}};
+      c.rosbag.angle_unit = units.at(options.angle_unit);
+      report = io::ConvertRos2Bag(c);
     }
     PrintReport(options.format, report, std::cout);
     if (report.interrupted) {
@@ -85,16 +91,18 @@ void AddConvertCommand(CLI::App* app) {
   auto options = std::make_shared<ConvertOptions>();
   io::ConversionOptions& c = options->conversion;
   CLI::App* cmd =
-      app->add_subcommand("convert", "Convert KITTI, CARMEN or ROS 1 bag data into a unimap dataset folder");
-  cmd->add_option("--input", c.input, "KITTI sequence folder, CARMEN log (.clf, .clf.bz2) or ROS 1 bag")
+      app->add_subcommand("convert", "Convert KITTI, CARMEN, ROS 1 or ROS 2 bag data into a unimap dataset folder");
+  cmd->add_option("--input", c.input,
+                  "KITTI sequence folder, CARMEN log (.clf, .clf.bz2), ROS 1 bag, or ROS 2 bag folder (or .db3)")
       ->required()
       ->check(CLI::ExistingPath);
   cmd->add_option("--format", options->format, "Input format")
       ->required()
-      ->check(CLI::IsMember({"kitti", "carmen", "rosbag"}));
+      ->check(CLI::IsMember({"kitti", "carmen", "rosbag", "ros2"}));
   cmd->add_option("--out", c.output, "Dataset folder to write")->required();
-  cmd->add_option("--payload", c.payload,
-                  "Payload name for metadata.yaml (default: kitti fixed_3d; carmen fixed_2d; rosbag by its topics)");
+  cmd->add_option(
+      "--payload", c.payload,
+      "Payload name for metadata.yaml (default: kitti fixed_3d; carmen fixed_2d; rosbag, ros2 by the topics)");
   cmd->add_option("--reorder-window-s", c.reorder_window_s,
                   "How late (s) a message may arrive and still be put in time order")
       ->capture_default_str()
@@ -118,20 +126,27 @@ void AddConvertCommand(CLI::App* app) {
   cmd->add_option("--carmen-range-max-m", c.carmen.range_max_m, "CARMEN: longer ranges are no-returns")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  // ROS 1 bags: "" = the one topic of the type, "none" = skip.
+  // ROS 1 and ROS 2 bags: "" = the one topic of the type, "none" = skip.
   io::RosbagTopics& topics = c.rosbag.topics;
   cmd->add_option("--cloud-topic", topics.cloud,
-                  "rosbag: sensor_msgs/PointCloud2 topic (default: the only one; 'none')");
-  cmd->add_option("--laser-topic", topics.laser, "rosbag: sensor_msgs/LaserScan topic (default: the only one; 'none')");
-  cmd->add_option("--imu-topic", topics.imu, "rosbag: sensor_msgs/Imu topic (default: the only one; 'none')");
-  cmd->add_option("--joint-topic", topics.joint, "rosbag: sensor_msgs/JointState motor topic (default: the only one)");
+                  "rosbag, ros2: sensor_msgs/PointCloud2 topic (default: the only one; 'none')");
+  cmd->add_option("--laser-topic", topics.laser,
+                  "rosbag, ros2: sensor_msgs/LaserScan topic (default: the only one; 'none')");
+  cmd->add_option("--imu-topic", topics.imu, "rosbag, ros2: sensor_msgs/Imu topic (default: the only one; 'none')");
+  cmd->add_option("--joint-topic", topics.joint,
+                  "rosbag, ros2: sensor_msgs/JointState motor topic (default: the only one)");
   cmd->add_option("--joint-name", c.rosbag.joint_name,
-                  "rosbag: joint whose position is the motor angle (default: first)");
+                  "rosbag, ros2: joint whose position is the motor angle (default: first)");
   cmd->add_option("--odometry-topic", topics.odometry,
-                  "rosbag: nav_msgs/Odometry topic (default: the only one; 'none')");
+                  "rosbag, ros2: nav_msgs/Odometry topic (default: the only one; 'none')");
   cmd->add_option("--groundtruth-topic", topics.groundtruth,
-                  "rosbag: nav_msgs/Odometry or geometry_msgs/PoseStamped topic written as groundtruth.tum")
+                  "rosbag, ros2: nav_msgs/Odometry or geometry_msgs/PoseStamped topic written as groundtruth.tum")
       ->capture_default_str();
+  cmd->add_option("--angle-topic", topics.angle,
+                  "ros2: std_msgs/msg/Float32, Float64 or Int32 motor angle topic, stamped with the bag's receive "
+                  "time (default: the only one; 'none')");
+  cmd->add_option("--angle-unit", options->angle_unit, "ros2: unit of the --angle-topic number (required with one)")
+      ->check(CLI::IsMember({"deg", "rad"}));
   cmd->callback([options]() {
     const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop reading, finish the dataset, exit 128 + signal
     const int code = SignalGuard::ExitCode(RunConvert(*options));

@@ -28,6 +28,24 @@ case $case_name in
       "$exe" "$sub" --help >"$work/$case_name.$sub.out" 2>&1 || fail "'$sub --help' failed"
       grep -q "Usage" "$work/$case_name.$sub.out" || fail "'$sub --help' printed no usage"
     done ;;
+  convert_ros2_nodding)
+    # The nodding RPLIDAR recording (a ROS 2 bag beside the repository; skipped, exit 77, when absent).
+    bag="$src/../shared/data/nodding_rplidar"
+    [ -d "$bag" ] || { echo "SKIP: $bag not found"; exit 77; }
+    code=$(run convert --input "$bag" --format ros2 --out "$work/nodding_no_unit")
+    if grep -q "UNIMAP_WITH_ROS2BAG" "$work/$case_name.out"; then echo "SKIP: built without ROS 2 bags"; exit 77; fi
+    [ "$code" = 2 ] || fail "exit $code without --angle-unit, expected 2"
+    expect "give its unit with --angle-unit deg\\|rad"
+    code=$(run convert --input "$bag" --format rosbag --out "$work/nodding_ros1")
+    [ "$code" = 2 ] || fail "exit $code with --format rosbag, expected 2"
+    expect "a ROS 2 bag .*--format ros2"
+    code=$(run convert --input "$bag" --format ros2 --angle-unit deg --out "$work/nodding")
+    [ "$code" = 0 ] || fail "exit $code"
+    expect "payload rotating_2d"
+    expect "^  scans: +295$"
+    expect "^  encoder: +1372$"
+    expect "^    3  /scan: LaserScan without beams$"
+    expect "angle \\(encoder\\) topic: /lidar_servo_angle \\(std_msgs/msg/Int32, deg\\): its times are the bag's receive times" ;;
   config_effective)
     code=$(run config --platform "$src/configs/platforms/rotating_hokuyo.yaml"); [ "$code" = 0 ] || fail "exit $code"
     expect "^plugin: +rotating_2d"
