@@ -20,10 +20,8 @@ std::string DefaultPayload(const RosbagTopics& selected) {
 
 }  // namespace
 
-ConversionReport WriteBagDataset(const ConversionOptions& options, const std::string& source,
-                                 const RosbagTopics& selected,
-                                 const std::function<std::optional<RosbagMessage>()>& next,
-                                 const std::function<const RosbagReaderStats&()>& stats) {
+ConversionReport WriteBagDataset(const ConversionOptions& options, const std::string& source, BagReader& reader) {
+  const RosbagTopics& selected = reader.selected();
   ConversionReport report;
   // One scan stream per dataset: clouds if there are any, else laser lines.
   const std::string scan_topic = !selected.cloud.empty() ? selected.cloud : selected.laser;
@@ -50,7 +48,7 @@ ConversionReport WriteBagDataset(const ConversionOptions& options, const std::st
   report.payload = metadata.payload;
   ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
   bool time_convention_noted = false;
-  while (std::optional<RosbagMessage> message = next()) {
+  while (std::optional<RosbagMessage> message = reader.Next()) {
     if (options.stop != nullptr && options.stop->load()) {
       report.interrupted = true;
       break;
@@ -84,7 +82,7 @@ ConversionReport WriteBagDataset(const ConversionOptions& options, const std::st
         message->data);
   }
   writer.Finish();
-  for (const auto& [reason, count] : stats().skipped) report.skipped[reason] += count;
+  for (const auto& [reason, count] : reader.stats().skipped) report.skipped[reason] += count;
   return report;
 }
 

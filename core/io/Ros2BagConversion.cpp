@@ -8,9 +8,7 @@ namespace unimap::io {
 ConversionReport ConvertRos2Bag(const ConversionOptions& options) {
   Ros2BagReader reader(options.input, options.rosbag);
   const RosbagTopics& selected = reader.selected();
-  ConversionReport report = WriteBagDataset(
-      options, "ros2bag", selected, [&] { return reader.Next(); },
-      [&]() -> const RosbagReaderStats& { return reader.stats(); });
+  ConversionReport report = WriteBagDataset(options, "ros2bag", reader);
   std::string angle = "angle (encoder) topic: (none)";
   if (!selected.angle.empty()) {
     std::string type;

@@ -49,15 +49,12 @@ struct BagFile {
 
 }  // namespace
 
-class Ros2BagReader::Impl {
+class Ros2BagReader::Impl : public BagState {
  public:
   std::string label;  // bag path, for messages
   RosbagReaderOptions options;
   std::vector<BagFile> files;                  // the bag's .db3 files
-  std::vector<RosbagTopicInfo> topics;         // every topic in the bag
-  RosbagTopics selected;                       // resolved choice ("" = not read)
   std::map<std::string, Selection> selection;  // selected topic -> stream and type
-  RosbagReaderStats stats;
 
   [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
 
@@ -265,18 +262,9 @@ std::optional<RosbagMessage> Ros2BagReader::Next() {
   }
 }
 
-const std::vector<RosbagTopicInfo>& Ros2BagReader::topics() const { return impl_->topics; }
-const RosbagTopics& Ros2BagReader::selected() const { return impl_->selected; }
-const RosbagReaderStats& Ros2BagReader::stats() const { return impl_->stats; }
-
 #else  // !UNIMAP_WITH_ROS2BAG
 
-class Ros2BagReader::Impl {
- public:
-  std::vector<RosbagTopicInfo> topics;
-  RosbagTopics selected;
-  RosbagReaderStats stats;
-};
+class Ros2BagReader::Impl : public BagState {};
 
 Ros2BagReader::Ros2BagReader(const std::filesystem::path& bag, RosbagReaderOptions /*options*/) {
   throw InputError(bag.string() +
@@ -286,12 +274,11 @@ Ros2BagReader::Ros2BagReader(const std::filesystem::path& bag, RosbagReaderOptio
 
 bool Ros2BagReader::Supported() { return false; }
 std::optional<RosbagMessage> Ros2BagReader::Next() { return std::nullopt; }
-const std::vector<RosbagTopicInfo>& Ros2BagReader::topics() const { return impl_->topics; }
-const RosbagTopics& Ros2BagReader::selected() const { return impl_->selected; }
-const RosbagReaderStats& Ros2BagReader::stats() const { return impl_->stats; }
 
 #endif
 
 Ros2BagReader::~Ros2BagReader() = default;
+
+const BagState& Ros2BagReader::state() const { return *impl_; }
 
 }  // namespace unimap::io

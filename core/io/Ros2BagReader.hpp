@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "io/BagReader.hpp"
 #include "io/BagTypes.hpp"
 
 namespace unimap::io {
@@ -17,7 +18,7 @@ namespace unimap::io {
 // as a motor angle (RosbagTopics::angle), std_msgs/msg/Float32, Float64 or
 // Int32, stamped with the receive time (they have no header). Needs a build
 // with UNIMAP_WITH_ROS2BAG; otherwise construction throws InputError saying so.
-class Ros2BagReader {
+class Ros2BagReader : public BagReader {
  public:
   // Opens the bag and resolves the topics. Throws InputError naming the file:
   // an unreadable or unsupported metadata.yaml (mcap or other storage,
@@ -33,21 +34,16 @@ class Ros2BagReader {
   // Whether this build reads ROS 2 bags at all.
   static bool Supported();
 
-  // Every topic in the bag (message counts from metadata.yaml, or counted in a lone .db3).
-  const std::vector<RosbagTopicInfo>& topics() const;
-  // The topics chosen (empty string = that stream is not read).
-  const RosbagTopics& selected() const;
-
   // The next message of a selected topic; std::nullopt at the end. A message
   // that cannot be converted (a LaserScan without beams, a JointState without
   // the joint, an odometry pose with a zero quaternion, non-finite IMU values)
   // is a counted skip; a truncated or malformed CDR message, a malformed cloud
   // or a damaged database throws InputError naming the .db3 file, topic and time.
-  std::optional<RosbagMessage> Next();
-  const RosbagReaderStats& stats() const;
+  std::optional<RosbagMessage> Next() override;
 
  private:
   class Impl;
+  const BagState& state() const override;
   std::unique_ptr<Impl> impl_;
 };
 

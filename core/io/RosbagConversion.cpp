@@ -6,9 +6,7 @@ namespace unimap::io {
 
 ConversionReport ConvertRosbag(const ConversionOptions& options) {
   RosbagReader reader(options.input, options.rosbag);
-  return WriteBagDataset(
-      options, "rosbag", reader.selected(), [&] { return reader.Next(); },
-      [&]() -> const RosbagReaderStats& { return reader.stats(); });
+  return WriteBagDataset(options, "rosbag", reader);
 }
 
 }  // namespace unimap::io

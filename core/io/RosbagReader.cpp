@@ -59,17 +59,14 @@ bool ToIsometry(const geometry_msgs::Pose& pose, Eigen::Isometry3d* T) {
 
 }  // namespace
 
-class RosbagReader::Impl {
+class RosbagReader::Impl : public BagState {
  public:
   std::string label;  // bag path, for messages
   RosbagReaderOptions options;
   rosbag::Bag bag;
-  std::vector<RosbagTopicInfo> topics;      // every topic in the bag
-  RosbagTopics selected;                    // resolved choice ("" = not read)
   std::map<std::string, Stream> stream_of;  // selected topic -> stream
   std::unique_ptr<rosbag::View> view;       // messages of the selected topics
   rosbag::View::iterator it;                // next message
-  RosbagReaderStats stats;
 
   [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
 
@@ -254,18 +251,9 @@ std::optional<RosbagMessage> RosbagReader::Next() {
   return std::nullopt;
 }
 
-const std::vector<RosbagTopicInfo>& RosbagReader::topics() const { return impl_->topics; }
-const RosbagTopics& RosbagReader::selected() const { return impl_->selected; }
-const RosbagReaderStats& RosbagReader::stats() const { return impl_->stats; }
-
 #else  // !UNIMAP_WITH_ROSBAG
 
-class RosbagReader::Impl {
- public:
-  std::vector<RosbagTopicInfo> topics;
-  RosbagTopics selected;
-  RosbagReaderStats stats;
-};
+class RosbagReader::Impl : public BagState {};
 
 RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions /*options*/) {
   RejectRos2Bag(bag);
@@ -276,12 +264,11 @@ RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions
 
 bool RosbagReader::Supported() { return false; }
 std::optional<RosbagMessage> RosbagReader::Next() { return std::nullopt; }
-const std::vector<RosbagTopicInfo>& RosbagReader::topics() const { return impl_->topics; }
-const RosbagTopics& RosbagReader::selected() const { return impl_->selected; }
-const RosbagReaderStats& RosbagReader::stats() const { return impl_->stats; }
 
 #endif
 
 RosbagReader::~RosbagReader() = default;
+
+const BagState& RosbagReader::state() const { return *impl_; }
 
 }  // namespace unimap::io
