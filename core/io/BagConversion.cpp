@@ -4,6 +4,7 @@
 #include <variant>
 #include <vector>
 
+#include "io/BagClockAligner.hpp"
 #include "io/ReorderingDatasetWriter.hpp"
 
 namespace unimap::io {
@@ -48,11 +49,7 @@ ConversionReport WriteBagDataset(const ConversionOptions& options, const std::st
   report.payload = metadata.payload;
   ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
   bool time_convention_noted = false;
-  while (std::optional<RosbagMessage> message = reader.Next()) {
-    if (options.stop != nullptr && options.stop->load()) {
-      report.interrupted = true;
-      break;
-    }
+  const auto write = [&](RosbagMessage* message) {
     std::visit(
         [&](auto& data) {
           using T = std::decay_t<decltype(data)>;
@@ -80,7 +77,20 @@ ConversionReport WriteBagDataset(const ConversionOptions& options, const std::st
           }
         },
         message->data);
+  };
+  BagClockAligner clocks(options.clocks, &report.notes);
+  std::vector<RosbagMessage> ready;
+  while (std::optional<RosbagMessage> message = reader.Next()) {
+    if (options.stop != nullptr && options.stop->load()) {
+      report.interrupted = true;
+      break;
+    }
+    clocks.Push(std::move(*message), &ready);
+    for (RosbagMessage& m : ready) write(&m);
+    ready.clear();
   }
+  clocks.Finish(&ready);
+  for (RosbagMessage& m : ready) write(&m);
   writer.Finish();
   for (const auto& [reason, count] : reader.stats().skipped) report.skipped[reason] += count;
   return report;

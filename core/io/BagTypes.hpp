@@ -57,7 +57,8 @@ struct RosbagTopicInfo {
 // bag's receive time when a header stamp is zero, or the message has none).
 struct RosbagMessage {
   std::string topic;
-  double stamp_s = 0.0;  // header stamp (or receive time, see above)
+  double stamp_s = 0.0;    // header stamp (or receive time, see above)
+  double receive_s = 0.0;  // the bag's receive (record) time
   std::variant<RawScan, LineScan, ImuSample, EncoderSample, OdometrySample, StampedPose> data;
   std::size_t dropped_points = 0;                                    // clouds: points with non-finite fields left out
   PointTimeConvention time_convention = PointTimeConvention::kNone;  // clouds: how point times were read

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/BagClockAligner.hpp"
 #include "io/CarmenReader.hpp"
 #include "io/KittiReader.hpp"
 #include "io/RosbagReader.hpp"
@@ -30,6 +31,7 @@ struct ConversionOptions {
   CarmenReaderOptions carmen;     // FLASER beam layout
   CarmenOdometrySource carmen_odometry = CarmenOdometrySource::kAuto;
   RosbagReaderOptions rosbag;               // topic choice (ROS 1 and ROS 2 bags), scalar angle unit
+  BagClockOptions clocks;                   // bags: topics stamped on different clocks (BagClockAligner)
   const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): stop reading, finish the dataset
 };
 

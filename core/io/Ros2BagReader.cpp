@@ -157,6 +157,7 @@ class Ros2BagReader::Impl : public BagState {
     const double receive_s = static_cast<double>(row.timestamp_ns) / 1e9;
     const auto stamp = [&](const CdrTime& t) { return t.IsZero() ? receive_s : t.Seconds(); };
     const std::string& topic = out->topic;
+    out->receive_s = receive_s;
     switch (selected_as.stream) {
       case Stream::kCloud: {
         const CdrPointCloud2 cloud = DecodePointCloud2(row.data, row.size);

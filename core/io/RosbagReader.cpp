@@ -130,6 +130,7 @@ class RosbagReader::Impl : public BagState {
   // Converts one message; false when it was skipped.
   bool Convert(const rosbag::MessageInstance& m, Stream stream, RosbagMessage* out) {
     out->topic = m.getTopic();
+    out->receive_s = m.getTime().toSec();
     switch (stream) {
       case Stream::kCloud: {
         auto cloud = m.instantiate<sensor_msgs::PointCloud2>();

@@ -137,6 +137,10 @@ void AddConvertCommand(CLI::App* app) {
                   "rosbag, ros2: sensor_msgs/JointState motor topic (default: the only one)");
   cmd->add_option("--joint-name", c.rosbag.joint_name,
                   "rosbag, ros2: joint whose position is the motor angle (default: first)");
+  cmd->add_flag(
+      "--no-clock-alignment", [&c](std::int64_t) { c.clocks.align = false; },
+      "rosbag, ros2: topics stamped on different clocks are an error instead of being moved onto the "
+      "bag's receive clock");
   cmd->add_option("--odometry-topic", topics.odometry,
                   "rosbag, ros2: nav_msgs/Odometry topic (default: the only one; 'none')");
   cmd->add_option("--groundtruth-topic", topics.groundtruth,

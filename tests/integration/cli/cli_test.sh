@@ -45,7 +45,13 @@ case $case_name in
     expect "^  scans: +295$"
     expect "^  encoder: +1372$"
     expect "^    3  /scan: LaserScan without beams$"
-    expect "angle \\(encoder\\) topic: /lidar_servo_angle \\(std_msgs/msg/Int32, deg\\): its times are the bag's receive times" ;;
+    expect "angle \\(encoder\\) topic: /lidar_servo_angle \\(std_msgs/msg/Int32, deg\\): its times are the bag's receive times"
+    # The scans carry the scanner's uptime, the angles the receive time: moved onto one clock.
+    expect "clocks: the topics' stamps disagree \\(/scan is stamped 1748602190\\.[0-9]+ s behind its receive times"
+    expect "clocks: /scan moved by \\+1748602190\\.[0-9]+ s"
+    code=$(run convert --input "$bag" --format ros2 --angle-unit deg --no-clock-alignment --out "$work/nodding_unaligned")
+    [ "$code" = 2 ] || fail "exit $code with --no-clock-alignment, expected 2"
+    expect "the topics are on different clocks" ;;
   config_effective)
     code=$(run config --platform "$src/configs/platforms/rotating_hokuyo.yaml"); [ "$code" = 0 ] || fail "exit $code"
     expect "^plugin: +rotating_2d"
