@@ -91,8 +91,8 @@ void BagClockAligner::Decide() {
   }
   if (high - low <= options_.tolerance_s) {
     if (samples_.size() > 1) {
-      notes_->push_back("clocks: the topics' stamps agree (receive time - stamp within " +
-                        Seconds(high - low) + " of each other): times kept as stamped");
+      notes_->push_back("clocks: the topics' stamps agree (receive time - stamp within " + Seconds(high - low) +
+                        " of each other): times kept as stamped");
     }
     return;
   }

@@ -9,11 +9,11 @@
 namespace unimap::io {
 
 struct BagClockOptions {
-  bool align = true;                   // streams on different clocks are moved onto the receive clock;
-                                       // false: that is an InputError
+  bool align = true;                    // streams on different clocks are moved onto the receive clock;
+                                        // false: that is an InputError
   std::size_t messages_per_topic = 20;  // offsets are the median over a topic's first this many messages
-  double window_s = 10.0;              // ... or over those received in the first this many seconds
-  double tolerance_s = 1.0;            // topics whose offsets differ by at most this share a clock
+  double window_s = 10.0;               // ... or over those received in the first this many seconds
+  double tolerance_s = 1.0;             // topics whose offsets differ by at most this share a clock
 };
 
 // Puts the streams of a bag on one clock. A topic's offset is the median

@@ -11,7 +11,7 @@ namespace unimap::io {
 namespace {
 
 // The payload the selected streams describe: 3D clouds or 2D lines, with a
-// motor encoder or without ("fixed_2d" has no plugin yet: --payload overrides).
+// motor encoder or without (--payload overrides).
 std::string DefaultPayload(const RosbagTopics& selected) {
   const bool cloud = !selected.cloud.empty();
   const bool motor = !selected.joint.empty() || !selected.angle.empty();

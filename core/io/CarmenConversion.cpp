@@ -18,8 +18,7 @@ ConversionReport ConvertCarmen(const ConversionOptions& options) {
 
   DatasetMetadata metadata;
   metadata.source = "carmen";
-  // A fixed planar laser: none of the three payload plugins fits it; the
-  // name says what the data is and --payload overrides it.
+  // A fixed planar laser: the fixed_2d payload (--payload overrides it).
   metadata.payload = options.payload.empty() ? "fixed_2d" : options.payload;
   report.payload = metadata.payload;
   ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);

@@ -11,10 +11,10 @@ platform() {  # writes a platform file from stdin, prints its path
   cat >"$work/$case_name.yaml"; echo "$work/$case_name.yaml"; }
 
 case $case_name in
-  plugins_lists_three)
+  plugins_lists_all)
     code=$(run plugins); [ "$code" = 0 ] || fail "exit $code"
-    for p in fixed_3d rotating_3d rotating_2d; do expect "^$p  \(ABI [0-9]+\)  .*libunimap_payload_$p\.so"; done
-    expect "scans_per_3d_scan +N +"; expect "3 payload plugin\(s\) found" ;;
+    for p in fixed_3d rotating_3d rotating_2d fixed_2d; do expect "^$p  \(ABI [0-9]+\)  .*libunimap_payload_$p\.so"; done
+    expect "scans_per_3d_scan +N +"; expect "4 payload plugin\(s\) found" ;;
   plugins_env_path)
     mkdir -p "$work/empty_plugins"
     UNIMAP_PLUGIN_PATH="$work/empty_plugins" run plugins --brief >/dev/null
