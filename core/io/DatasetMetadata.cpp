@@ -40,7 +40,8 @@ const char* const kKeys[] = {"format_version",
                              "gyro_bias_walk_rad_s_sqrt_s",
                              "range_noise_m",
                              "encoder_resolution_rad",
-                             "payload_parameters"};
+                             "payload_parameters",
+                             "camera_from_lidar"};
 
 // The double fields of DatasetMetadata, by key.
 std::vector<std::pair<const char*, double DatasetMetadata::*>> DoubleFields() {
@@ -287,6 +288,12 @@ DatasetMetadata ParseDatasetMetadata(const std::string& yaml_text, const std::st
       for (const auto& [name, field] : double_fields) {
         if (key == name) metadata.*field = parser.Double(value, key);
       }
+      if (key == "camera_from_lidar") {
+        if (!value.IsSequence() || value.size() != 12) {
+          parser.Fail(value, key, "expected a list of 12 numbers (3x4 row-major), got " + KindOf(value));
+        }
+        for (std::size_t i = 0; i < 12; ++i) metadata.camera_from_lidar.push_back(parser.Double(value[i], key));
+      }
       if (key == "payload_parameters" && !value.IsNull()) {
         if (!value.IsMap()) parser.Fail(value, key, "expected a map, got " + KindOf(value));
         std::map<std::string, int> lines;
@@ -332,6 +339,14 @@ void SaveDatasetMetadata(const DatasetMetadata& metadata, const std::filesystem:
   }
   out << YAML::Key << "payload_parameters" << YAML::Value;
   EmitParameters(out, metadata.payload_parameters, label);
+  if (!metadata.camera_from_lidar.empty()) {
+    if (metadata.camera_from_lidar.size() != 12) {
+      throw ConfigError(label, 0, "camera_from_lidar", "needs 12 values (3x4 row-major)");
+    }
+    out << YAML::Key << "camera_from_lidar" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const double v : metadata.camera_from_lidar) out << YamlDouble(v);
+    out << YAML::EndSeq;
+  }
   out << YAML::EndMap;
   if (!out.good()) throw InputError(label + ": cannot format the metadata: " + out.GetLastError());
   PartialFile partial(file);

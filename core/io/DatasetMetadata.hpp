@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "unimap/ParameterMap.hpp"
 
@@ -27,6 +28,7 @@ struct DatasetMetadata {
   double range_noise_m = 0.0;                // LiDAR range noise sigma used (simulation)
   double encoder_resolution_rad = 0.0;       // encoder quantisation step used (simulation), 0 = none
   ParameterMap payload_parameters;           // the payload's effective parameters the data was made with
+  std::vector<double> camera_from_lidar;     // KITTI: Tr = T_cam_lidar, 3x4 row-major (12 values); empty: none
 };
 
 // Reads DIR/metadata.yaml; throws ConfigError naming the file, line and key

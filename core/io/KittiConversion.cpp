@@ -18,6 +18,11 @@ ConversionReport ConvertKitti(const ConversionOptions& options) {
   metadata.source = "kitti";
   metadata.payload = options.payload.empty() ? "fixed_3d" : options.payload;
   metadata.scan_rate_hz = 1.0 / options.kitti.scan_period_s;
+  // Tr, so that runs can also write their trajectory in KITTI's camera frame.
+  const Eigen::Matrix<double, 3, 4> Tr = reader.T_cam_lidar().matrix().topRows<3>();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) metadata.camera_from_lidar.push_back(Tr(r, c));
+  }
   report.payload = metadata.payload;
   DatasetWriter writer(options.output, metadata);
   // Frames are in file order and times.txt is checked non-decreasing: no reordering needed.

@@ -67,6 +67,17 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   const std::vector<StampedPose> trajectory = mapper.OptimizedTrajectory();
   io::WriteTumTrajectory(out_dir / "trajectory.tum", trajectory);
   io::WriteKittiTrajectory(out_dir / "trajectory_kitti.txt", trajectory);
+  if (options.T_cam_lidar && !trajectory.empty()) {
+    const Eigen::Isometry3d& Tr = *options.T_cam_lidar;
+    const Eigen::Isometry3d T_lidar0_map = (trajectory.front().T_map_body * options.T_body_lidar).inverse();
+    std::vector<StampedPose> camera;
+    camera.reserve(trajectory.size());
+    for (const StampedPose& pose : trajectory) {
+      const Eigen::Isometry3d T_lidar0_lidar = T_lidar0_map * pose.T_map_body * options.T_body_lidar;
+      camera.push_back({pose.time_s, Tr * T_lidar0_lidar * Tr.inverse()});
+    }
+    io::WriteKittiTrajectory(out_dir / "trajectory_kitti_camera.txt", camera);
+  }
 
   const std::vector<Eigen::Vector3f> points = mapper.MapPoints(options.map_voxel_m);
   io::WritePcdXyz(out_dir / "map.pcd", points);

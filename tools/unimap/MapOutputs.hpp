@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "Json.hpp"
 #include "pipeline/Mapper.hpp"
 #include "unimap/StampedPose.hpp"
@@ -15,13 +17,18 @@ namespace unimap::cli {
 struct MapOutputOptions {
   double map_voxel_m = 0.1;          // map.pcd / map.ply keep one point per voxel of this edge (m)
   double octree_resolution_m = 0.1;  // voxel edge of map.bt (m)
+  // KITTI data (DatasetMetadata::camera_from_lidar): also trajectory_kitti_camera.txt,
+  // the poses of KITTI's left camera relative to its first, T_cam0_cam = Tr T_lidar0_lidar Tr^-1,
+  // as KITTI's devkit and evo read them; T_body_lidar is the payload's (fixed) mount.
+  std::optional<Eigen::Isometry3d> T_cam_lidar;
+  Eigen::Isometry3d T_body_lidar = Eigen::Isometry3d::Identity();
 };
 
 // Writes out_dir/trajectory.tum and trajectory_kitti.txt (the optimised
-// trajectory), map.pcd, map.ply, map.bt and loop_closures.csv (each accepted
-// closure: time, the 3D scan's position, the matched submap's origin), each atomically; returns the
-// mapper's counts and the file names as run.json's "mapping" object.
-// Throws unimap::Error when a file cannot be written.
+// trajectory, body frame; with options.T_cam_lidar also trajectory_kitti_camera.txt), map.pcd, map.ply, map.bt and
+// loop_closures.csv (each accepted closure: time, the 3D scan's position, the matched submap's origin), each
+// atomically; returns the mapper's counts and the file names as run.json's "mapping" object. Throws unimap::Error when
+// a file cannot be written.
 Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mapper& mapper,
                      const MapOutputOptions& options);
 

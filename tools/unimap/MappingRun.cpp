@@ -16,6 +16,7 @@
 #include "io/TumTrajectory.hpp"
 #include "pipeline/Mapper.hpp"
 #include "pipeline/MapperSettings.hpp"
+#include "unimap/EncoderTrack.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
 
@@ -50,6 +51,13 @@ int RunMappingToFolder(const MappingRunOptions& options) {
         RunSinkToFolder(reader, mapper, out, kOdometryFile, options.max_duration_s, options.quiet, options.trace);
     MapOutputOptions map_options;
     map_options.octree_resolution_m = mapper_options.submaps.map.resolution_m;
+    if (const std::vector<double>& Tr = reader.metadata().camera_from_lidar;
+        Tr.size() == 12 && !platform.plugin.plugin->UsesEncoder()) {
+      Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+      for (int k = 0; k < 12; ++k) m(k / 4, k % 4) = Tr[static_cast<std::size_t>(k)];
+      map_options.T_cam_lidar = Eigen::Isometry3d(m);
+      map_options.T_body_lidar = platform.plugin.plugin->BodyFromLidarAt(EncoderTrack(), 0.0);
+    }
     pipeline::StageTimes stages = mapper.Times();
     Json mapping = Json::object();
     {

@@ -31,7 +31,17 @@ case "$case_name" in
     [ "$matched" = 15 ] || fail "$matched of the 15 sweeps after the first were matched"
     [ "$associated" = 16 ] || fail "$associated of 16 poses associated with the truth"
     below "$ate" 0.36 || fail "ate_rmse_m $ate is not below KISS-ICP's 0.36 m"
-    below 0.9 "$scale" && below "$scale" 1.1 || fail "trajectory_scale $scale is outside 0.9-1.1" ;;
+    below 0.9 "$scale" && below "$scale" 1.1 || fail "trajectory_scale $scale is outside 0.9-1.1"
+    # The same trajectory in KITTI's camera frame (as poses_camera_frame.txt):
+    # 16 poses, the car drives along the camera's +z; the last pose is where
+    # the truth's is, within the run's scale error (0.9-1.1) and 0.5 m across.
+    cam="$work/out/trajectory_kitti_camera.txt"
+    [ "$(wc -l <"$cam")" = 16 ] || fail "trajectory_kitti_camera.txt has $(wc -l <"$cam") poses, expected 16"
+    paste -d ' ' <(sed -n 16p "$cam") <(sed -n 16p "$data/kitti00/poses_camera_frame.txt") | awk '{
+      ex = $4; ey = $8; ez = $12; tx = $16; ty = $20; tz = $24
+      if (ez < 0.85 * tz || ez > 1.15 * tz || (ex - tx)^2 + (ey - ty)^2 > 0.25) {
+        print "camera-frame pose 15 (" ex ", " ey ", " ez ") vs truth (" tx ", " ty ", " tz ")"; exit 1 } }' ||
+      fail "trajectory_kitti_camera.txt is not in the camera frame" ;;
   *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

@@ -95,6 +95,28 @@ TEST(DatasetMetadata, EveryFieldAndParameterTypeRoundTripsBitExactly) {
   EXPECT_FALSE(std::filesystem::exists(folder / "metadata.yaml.partial"));
 }
 
+TEST(DatasetMetadata, KittiCameraFromLidarRoundTripsAndIsChecked) {
+  test::ScratchFolder folder;
+  DatasetMetadata m;
+  m.payload = "fixed_3d";
+  for (int k = 0; k < 12; ++k) m.camera_from_lidar.push_back(0.1 * k - 1.0 / 3.0);
+  SaveDatasetMetadata(m, folder / "metadata.yaml");
+  const DatasetMetadata read = LoadDatasetMetadata(folder / "metadata.yaml");
+  ASSERT_EQ(read.camera_from_lidar.size(), 12u);
+  for (std::size_t k = 0; k < 12; ++k) EXPECT_TRUE(test::SameBits(read.camera_from_lidar[k], m.camera_from_lidar[k]));
+  // Without it the key is not written and reads back empty.
+  DatasetMetadata plain;
+  plain.payload = "fixed_3d";
+  SaveDatasetMetadata(plain, folder / "metadata.yaml");
+  EXPECT_EQ(test::ReadText(folder / "metadata.yaml").find("camera_from_lidar"), std::string::npos);
+  EXPECT_TRUE(LoadDatasetMetadata(folder / "metadata.yaml").camera_from_lidar.empty());
+  const ConfigError e = LoadError(folder, "format_version: 1\npayload: fixed_3d\ncamera_from_lidar: [1, 2, 3]\n");
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_EQ(e.key(), "camera_from_lidar");
+  m.camera_from_lidar.pop_back();
+  EXPECT_THROW(SaveDatasetMetadata(m, folder / "metadata.yaml"), ConfigError);
+}
+
 TEST(DatasetMetadata, PayloadParametersAreNestedMaps) {
   test::ScratchFolder folder;
   DatasetMetadata m;
