@@ -8,6 +8,7 @@
 
 #include "io/DatasetLayout.hpp"
 #include "io/NumberLineStream.hpp"
+#include "io/RawInput.hpp"
 #include "io/ScanFileReader.hpp"
 #include "io/TumLine.hpp"
 #include "unimap/Errors.hpp"
@@ -57,8 +58,10 @@ class DatasetReader::Impl {
 
   static DatasetMetadata LoadChecked(const std::filesystem::path& folder) {
     std::error_code ec;
+    if (const std::optional<RawInput> raw = DetectRawInput(folder)) throw InputError(ConvertAdvice(folder, *raw));
     if (!std::filesystem::is_directory(folder, ec)) {
-      throw InputError(folder.string() + ": no such dataset folder");
+      throw InputError(folder.string() + (std::filesystem::exists(folder, ec) ? ": a file, not a dataset folder"
+                                                                              : ": no such dataset folder"));
     }
     if (!std::filesystem::exists(folder / layout::kMetadata, ec)) {
       throw InputError(folder.string() +

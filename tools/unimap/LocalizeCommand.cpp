@@ -235,9 +235,10 @@ void AddLocalizeCommand(CLI::App* app) {
       app->add_subcommand("localize", "Localise a dataset in a fixed prior map (.bt or .pcd) and evaluate it");
   cmd->add_option("--map", options->map_file, "Prior map: OctoMap .bt or point cloud .pcd (map frame)")->required();
   cmd->add_option("--platform", options->platform_file, "Platform YAML")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--data", options->data_dir, "Dataset folder (docs/dataset-format.md)")
+  cmd->add_option("--data", options->data_dir,
+                  "Dataset folder (docs/dataset-format.md); a raw recording gets the convert command to use")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(CLI::ExistingPath);
   cmd->add_option("--out", options->out_dir, "Output folder")->required();
   cmd->add_option("--initial-pose", options->initial_pose,
                   "T_map_body at the end of the static start, \"x y z qx qy qz qw\" "

@@ -14,9 +14,10 @@ void AddRunCommand(CLI::App* app) {
   auto options = std::make_shared<MappingRunOptions>();
   CLI::App* cmd = app->add_subcommand("run", "Map a dataset with a platform (trajectory, map, evaluation)");
   cmd->add_option("--platform", options->platform_file, "Platform YAML")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--data", options->data_dir, "Dataset folder (docs/dataset-format.md)")
+  cmd->add_option("--data", options->data_dir,
+                  "Dataset folder (docs/dataset-format.md); a raw recording gets the convert command to use")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(CLI::ExistingPath);
   cmd->add_option("--out", options->out_dir, "Output folder")->required();
   cmd->add_option("--max-duration-s", options->max_duration_s, "Process only this much data (s)")
       ->check(FinitePositive());
