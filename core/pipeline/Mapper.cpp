@@ -60,7 +60,7 @@ void Mapper::Finish() {
 
 std::vector<ScanPose> Mapper::TakePoses() {
   std::vector<ScanPose> poses = localizer_->TakePoses();
-  local_poses_.insert(local_poses_.end(), poses.begin(), poses.end());
+  for (const ScanPose& p : poses) local_poses_.push_back({p.time_s, p.T_map_body.matrix().topRows<3>()});
   return poses;
 }
 
@@ -139,7 +139,11 @@ void Mapper::PollOptimizer(bool wait) {
 std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
   std::vector<StampedPose> out;
   out.reserve(local_poses_.size());
-  for (const ScanPose& p : local_poses_) out.push_back({p.time_s, graph_.ToWorld(p.time_s, p.T_map_body)});
+  for (const LocalPose& p : local_poses_) {
+    Eigen::Isometry3d T_local_body = Eigen::Isometry3d::Identity();
+    T_local_body.matrix().topRows<3>() = p.T_local_body;
+    out.push_back({p.time_s, graph_.ToWorld(p.time_s, T_local_body)});
+  }
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <memory>
 #include <string>
@@ -98,7 +99,14 @@ class Mapper : public EventSink {
   TrajectoryGraph graph_;
   LoopClosureFinder finder_;
   graph::BackgroundOptimizer optimizer_;
-  std::vector<ScanPose> local_poses_;                          // every pose so far (local frame)
+  // Every scan's pose so far (local frame), kept compact: a long run holds
+  // one per line scan (144,235 in an hour of the tunnel), so no diagnostics,
+  // and a deque so that growing never copies them all.
+  struct LocalPose {
+    double time_s = 0.0;
+    Eigen::Matrix<double, 3, 4> T_local_body = Eigen::Matrix<double, 3, 4>::Zero();  // [R | t], exact
+  };
+  std::deque<LocalPose> local_poses_;
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
   matching::VoxelKeySet held_voxels_;                          // voxels (local frame) key_points_body_ holds
   double path_m_ = 0.0;                                        // distance travelled by the key scans
