@@ -28,9 +28,10 @@ RetiredSubmap Submap::Retire() {
     // WaitForUpdates (or is moot now): keep what the octree holds.
   }
   const Eigen::Vector3f origin = T_local_submap_.translation().cast<float>();
-  retired.points_submap = map_->SurfaceMeans();
+  std::vector<Eigen::Vector3f> points = map_->SurfaceMeans();
   retired.update_times = map_->UpdateTimes();
-  for (Eigen::Vector3f& p : retired.points_submap) p -= origin;
+  for (Eigen::Vector3f& p : points) p -= origin;
+  retired.points_submap = CompactPoints(points);
   map_.reset();
   return retired;
 }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 
+#include "map/CompactPoints.hpp"
 #include "map/DistanceMapOptions.hpp"
 #include "map/SurfaceDistanceMap.hpp"
 
@@ -15,10 +16,10 @@ namespace unimap::map {
 struct RetiredSubmap {
   int id = 0;                                                        // SubmapManager id
   Eigen::Isometry3d T_local_submap = Eigen::Isometry3d::Identity();  // frame at creation (local odometry frame)
-  std::vector<Eigen::Vector3f> points_submap;                        // surface points (the mean of each occupied
-                                                                     // voxel's returns), submap frame
-  int scans_3d = 0;                                                  // 3D scans it received
-  MapUpdateTimes update_times;                                       // its map's update times, summed
+  CompactPoints points_submap;  // surface points (the mean of each occupied voxel's returns), submap
+                                // frame, at half the size (a long run keeps hundreds of these)
+  int scans_3d = 0;             // 3D scans it received
+  MapUpdateTimes update_times;  // its map's update times, summed
 };
 
 // One submap (docs/design.md 1.4): its surface, occupancy and incremental

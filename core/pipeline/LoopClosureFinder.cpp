@@ -20,8 +20,8 @@ const graph::LoopClosureMatcher& LoopClosureFinder::Matcher(std::size_t index) {
     }
   }
   ++stats_.matchers_built;
-  cache_.emplace_front(
-      index, std::make_unique<graph::LoopClosureMatcher>(retired_[index].submap.points_submap, matcher_options_));
+  cache_.emplace_front(index, std::make_unique<graph::LoopClosureMatcher>(retired_[index].submap.points_submap.Expand(),
+                                                                          matcher_options_));
   while (cache_.size() > static_cast<std::size_t>(search_.max_cached_matchers)) cache_.pop_back();
   return *cache_.front().second;
 }
