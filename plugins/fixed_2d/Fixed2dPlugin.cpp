@@ -6,8 +6,6 @@
 namespace unimap::payload {
 namespace {
 
-constexpr const char* kBodyLidar = "extrinsic.body_lidar";
-
 // The paper's parameters for a fixed planar scanner on a ground robot.
 CoreDefaults FixedPlanarCoreDefaults() {
   CoreDefaults d;
@@ -60,7 +58,7 @@ ParameterSet Fixed2dPlugin::Defaults() const {
   ParameterSet set;
   FixedPlanarCoreDefaults().AddTo(&set);
   PlanarScanner().AddTo(&set);
-  DefaultBodyLidar().AddTo(&set, kBodyLidar, "scanner frame in the body frame (T_body_lidar)");
+  AddMountTo(DefaultBodyLidar(), &set);
   return set;
 }
 
@@ -69,26 +67,15 @@ void Fixed2dPlugin::Configure(const ParameterMap& parameters) {
   // Read everything before changing anything: a ConfigError leaves *this as it was.
   const CoreParameters core = CoreParameters::FromMap(parameters);
   const LineScannerModel lidar = LineScannerModel::FromMap(parameters);
-  const Extrinsic body_lidar = Extrinsic::FromMap(parameters, kBodyLidar);
+  const Extrinsic body_lidar = ReadMount(parameters);
   core_ = core;
   lidar_ = lidar;
-  body_lidar_ = body_lidar;
-  T_body_lidar_ = body_lidar.ToIsometry();
-}
-
-bool Fixed2dPlugin::UsesEncoder() const { return false; }
-
-double Fixed2dPlugin::MotorAngleAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const { return 0.0; }
-
-Eigen::Isometry3d Fixed2dPlugin::BodyFromLidarAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const {
-  return T_body_lidar_;
+  SetMount(body_lidar);
 }
 
 BodyScan Fixed2dPlugin::Deskew(const RawScan& scan, const EncoderTrack& /*encoder*/,
                                const MotionQuery& T_world_body_at) const {
-  const Eigen::Isometry3d T_body_lidar = T_body_lidar_;
-  return lidar_.Deskew(
-      scan, [T_body_lidar](double /*time_s*/) { return T_body_lidar; }, T_world_body_at);
+  return lidar_.Deskew(scan, Mount(), T_world_body_at);
 }
 
 }  // namespace unimap::payload

@@ -3,9 +3,9 @@
 
 #include <Eigen/Geometry>
 
+#include "../common/FixedMountPlugin.hpp"
 #include "../rotating_2d/LineScannerModel.hpp"
 #include "unimap/CoreParameters.hpp"
-#include "unimap/Extrinsic.hpp"
 #include "unimap/PayloadPlugin.hpp"
 
 namespace unimap::payload {
@@ -17,7 +17,7 @@ namespace unimap::payload {
 // A single plane observes x, y and yaw only: map it with planar matching
 // (`mapper: {gpf: {planar: true}}` in the platform file) and a planar
 // motion source (wheel odometry).
-class Fixed2dPlugin final : public PayloadPlugin {
+class Fixed2dPlugin final : public FixedMountPlugin {
  public:
   // Configured with Defaults().
   Fixed2dPlugin();
@@ -30,20 +30,12 @@ class Fixed2dPlugin final : public PayloadPlugin {
   // Validates against Defaults() and applies every key; on ConfigError the
   // previous configuration stays in effect.
   void Configure(const ParameterMap& parameters) override;
-  // False: nothing moves the scanner relative to the body.
-  bool UsesEncoder() const override;
-  // 0 (no motor); the encoder is ignored.
-  double MotorAngleAt(const EncoderTrack& encoder, double time_s) const override;
-  // The constant T_body_lidar; the encoder and time are ignored.
-  Eigen::Isometry3d BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const override;
   // Beam times from azimuth when the line has none, then rigid-body deskew.
   BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder, const MotionQuery& T_world_body_at) const override;
 
  private:
-  CoreParameters core_;                                             // the paper's parameters, as configured
-  LineScannerModel lidar_;                                          // lidar.* keys
-  Extrinsic body_lidar_;                                            // extrinsic.body_lidar.*
-  Eigen::Isometry3d T_body_lidar_ = Eigen::Isometry3d::Identity();  // body_lidar_ as a transform
+  CoreParameters core_;     // the paper's parameters, as configured
+  LineScannerModel lidar_;  // lidar.* keys
 };
 
 }  // namespace unimap::payload

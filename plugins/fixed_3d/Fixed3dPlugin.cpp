@@ -6,8 +6,6 @@
 namespace unimap::payload {
 namespace {
 
-constexpr const char* kBodyLidar = "extrinsic.body_lidar";
-
 // The paper's parameters for a fixed VLP-16 (corridor-scale indoor mapping).
 CoreDefaults FixedVlp16CoreDefaults() {
   CoreDefaults d;
@@ -50,7 +48,7 @@ ParameterSet Fixed3dPlugin::Defaults() const {
   ParameterSet set;
   FixedVlp16CoreDefaults().AddTo(&set);
   SpinningLidarModel{}.AddTo(&set);  // a VLP-16
-  DefaultBodyLidar().AddTo(&set, kBodyLidar, "LiDAR frame in the body frame (T_body_lidar)");
+  AddMountTo(DefaultBodyLidar(), &set);
   return set;
 }
 
@@ -59,26 +57,15 @@ void Fixed3dPlugin::Configure(const ParameterMap& parameters) {
   // Read everything before changing anything: a ConfigError leaves *this as it was.
   const CoreParameters core = CoreParameters::FromMap(parameters);
   const SpinningLidarModel lidar = SpinningLidarModel::FromMap(parameters);
-  const Extrinsic body_lidar = Extrinsic::FromMap(parameters, kBodyLidar);
+  const Extrinsic body_lidar = ReadMount(parameters);
   core_ = core;
   lidar_ = lidar;
-  body_lidar_ = body_lidar;
-  T_body_lidar_ = body_lidar.ToIsometry();
-}
-
-bool Fixed3dPlugin::UsesEncoder() const { return false; }
-
-double Fixed3dPlugin::MotorAngleAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const { return 0.0; }
-
-Eigen::Isometry3d Fixed3dPlugin::BodyFromLidarAt(const EncoderTrack& /*encoder*/, double /*time_s*/) const {
-  return T_body_lidar_;
+  SetMount(body_lidar);
 }
 
 BodyScan Fixed3dPlugin::Deskew(const RawScan& scan, const EncoderTrack& /*encoder*/,
                                const MotionQuery& T_world_body_at) const {
-  const Eigen::Isometry3d T_body_lidar = T_body_lidar_;
-  return lidar_.Deskew(
-      scan, [T_body_lidar](double /*time_s*/) { return T_body_lidar; }, T_world_body_at);
+  return lidar_.Deskew(scan, Mount(), T_world_body_at);
 }
 
 }  // namespace unimap::payload

@@ -3,9 +3,9 @@
 
 #include <Eigen/Geometry>
 
+#include "../common/FixedMountPlugin.hpp"
 #include "../common/SpinningLidarModel.hpp"
 #include "unimap/CoreParameters.hpp"
-#include "unimap/Extrinsic.hpp"
 #include "unimap/PayloadPlugin.hpp"
 
 namespace unimap::payload {
@@ -13,7 +13,7 @@ namespace unimap::payload {
 // fixed_3d: a spinning multi-beam LiDAR (Velodyne VLP-16 class: 16 rings,
 // -15..+15 deg, 10 Hz, 0.4..100 m) rigidly mounted on the body:
 //   T_body_lidar(t) = T_body_lidar (extrinsic.body_lidar), no motor, no encoder.
-class Fixed3dPlugin final : public PayloadPlugin {
+class Fixed3dPlugin final : public FixedMountPlugin {
  public:
   // Configured with Defaults().
   Fixed3dPlugin();
@@ -26,20 +26,12 @@ class Fixed3dPlugin final : public PayloadPlugin {
   // Validates against Defaults() and applies every key; on ConfigError the
   // previous configuration stays in effect.
   void Configure(const ParameterMap& parameters) override;
-  // False: nothing moves the LiDAR relative to the body.
-  bool UsesEncoder() const override;
-  // 0 (no motor); the encoder is ignored.
-  double MotorAngleAt(const EncoderTrack& encoder, double time_s) const override;
-  // The constant T_body_lidar; the encoder and time are ignored.
-  Eigen::Isometry3d BodyFromLidarAt(const EncoderTrack& encoder, double time_s) const override;
   // Firing times from azimuth when the scan has none, then rigid-body deskew.
   BodyScan Deskew(const RawScan& scan, const EncoderTrack& encoder, const MotionQuery& T_world_body_at) const override;
 
  private:
-  CoreParameters core_;                                             // the paper's parameters, as configured
-  SpinningLidarModel lidar_;                                        // lidar.* keys
-  Extrinsic body_lidar_;                                            // extrinsic.body_lidar.*
-  Eigen::Isometry3d T_body_lidar_ = Eigen::Isometry3d::Identity();  // body_lidar_ as a transform
+  CoreParameters core_;       // the paper's parameters, as configured
+  SpinningLidarModel lidar_;  // lidar.* keys
 };
 
 }  // namespace unimap::payload
