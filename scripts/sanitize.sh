@@ -31,8 +31,8 @@ asan() {  # asan [ctest args...]
   if [ "$MODE" = asan-unit ]; then
     # The CI subset, the fuzz replays and what they load (plugins, test plugins).
     cmake --build "$ASAN_DIR" -j2 --target unimap_payload_fixed_3d unimap_payload_rotating_3d \
-      unimap_payload_rotating_2d unimap_broken_plugins unit_sdk unit_config unit_plugins unit_io unit_eval unit_api \
-      $(cd "$ASAN_DIR" && make help | sed -n 's/^\.\.\. \(fuzz_replay_[a-z_]*\)$/\1/p' | grep -v '^fuzz_replay_bt$')
+      unimap_payload_rotating_2d unimap_payload_fixed_2d unimap_broken_plugins unit_sdk unit_config unit_plugins unit_io unit_eval unit_api \
+      $(cd "$ASAN_DIR" && make help | sed -n 's/^\.\.\. \(fuzz_replay_[a-z0-9_]*\)$/\1/p' | grep -v '^fuzz_replay_bt$')
   else
     cmake --build "$ASAN_DIR" -j2
   fi

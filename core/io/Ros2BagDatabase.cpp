@@ -34,17 +34,25 @@ std::string Text(sqlite3_stmt* statement, int column) {
 Ros2BagDatabase::Ros2BagDatabase(const std::filesystem::path& file) : file_(file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file.string() + ": no such bag file");
-  if (sqlite3_open_v2(file.string().c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
-    Fail("cannot open as an SQLite database");
+  // A constructor that throws runs no destructor: the handle (which
+  // sqlite3_open_v2 allocates even when it fails) is closed here then.
+  try {
+    if (sqlite3_open_v2(file.string().c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+      Fail("cannot open as an SQLite database");
+    }
+    const Statement topics(Prepare("SELECT id, name, type, serialization_format FROM topics ORDER BY id"));
+    int code = SQLITE_ROW;
+    while ((code = sqlite3_step(topics.get())) == SQLITE_ROW) {
+      topics_.push_back(
+          {sqlite3_column_int64(topics.get(), 0), Text(topics.get(), 1), Text(topics.get(), 2), Text(topics.get(), 3)});
+    }
+    if (code != SQLITE_DONE) Fail("cannot read the topics table");
+    const Statement messages(Prepare("SELECT id, topic_id, timestamp, data FROM messages LIMIT 0"));  // exists
+  } catch (...) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw;
   }
-  const Statement topics(Prepare("SELECT id, name, type, serialization_format FROM topics ORDER BY id"));
-  int code = SQLITE_ROW;
-  while ((code = sqlite3_step(topics.get())) == SQLITE_ROW) {
-    topics_.push_back(
-        {sqlite3_column_int64(topics.get(), 0), Text(topics.get(), 1), Text(topics.get(), 2), Text(topics.get(), 3)});
-  }
-  if (code != SQLITE_DONE) Fail("cannot read the topics table");
-  const Statement messages(Prepare("SELECT id, topic_id, timestamp, data FROM messages LIMIT 0"));  // exists
 }
 
 Ros2BagDatabase::~Ros2BagDatabase() {
