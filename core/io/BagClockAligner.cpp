@@ -59,21 +59,18 @@ void BagClockAligner::Push(RosbagMessage message, std::vector<RosbagMessage>* re
   const bool enough = std::all_of(samples_.begin(), samples_.end(), [&](const auto& topic) {
     return topic.second.size() >= options_.messages_per_topic;
   });
-  if (enough || held_.back().receive_s - first_receive_s > options_.window_s) {
-    Decide();
-    std::vector<RosbagMessage> held;
-    held.swap(held_);
-    for (RosbagMessage& m : held) Release(std::move(m), ready);
-  }
+  if (enough || held_.back().receive_s - first_receive_s > options_.window_s) DecideAndRelease(ready);
 }
 
 void BagClockAligner::Finish(std::vector<RosbagMessage>* ready) {
-  if (!decided_) {
-    Decide();
-    std::vector<RosbagMessage> held;
-    held.swap(held_);
-    for (RosbagMessage& m : held) Release(std::move(m), ready);
-  }
+  if (!decided_) DecideAndRelease(ready);
+}
+
+void BagClockAligner::DecideAndRelease(std::vector<RosbagMessage>* ready) {
+  Decide();
+  std::vector<RosbagMessage> held;
+  held.swap(held_);
+  for (RosbagMessage& m : held) Release(std::move(m), ready);
 }
 
 void BagClockAligner::Decide() {

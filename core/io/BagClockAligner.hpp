@@ -37,6 +37,8 @@ class BagClockAligner {
 
  private:
   void Decide();
+  // Decide(), then releases everything held, in order.
+  void DecideAndRelease(std::vector<RosbagMessage>* ready);
   void Release(RosbagMessage message, std::vector<RosbagMessage>* ready);
 
   BagClockOptions options_;

@@ -57,18 +57,29 @@ class DatasetReader::Impl {
   }
 
   static DatasetMetadata LoadChecked(const std::filesystem::path& folder) {
+    // A raw recording is looked for only when the folder is not a dataset,
+    // so opening a dataset costs no second read of its metadata.
+    const auto not_a_dataset = [&folder](const std::string& reason) {
+      if (const std::optional<RawInput> raw = DetectRawInput(folder)) throw InputError(ConvertAdvice(folder, *raw));
+      throw InputError(folder.string() + reason);
+    };
     std::error_code ec;
-    if (const std::optional<RawInput> raw = DetectRawInput(folder)) throw InputError(ConvertAdvice(folder, *raw));
     if (!std::filesystem::is_directory(folder, ec)) {
-      throw InputError(folder.string() + (std::filesystem::exists(folder, ec) ? ": a file, not a dataset folder"
-                                                                              : ": no such dataset folder"));
+      not_a_dataset(std::filesystem::exists(folder, ec) ? ": a file, not a dataset folder"
+                                                        : ": no such dataset folder");
     }
     if (!std::filesystem::exists(folder / layout::kMetadata, ec)) {
-      throw InputError(folder.string() +
-                       ": no metadata.yaml: not a dataset, or an incomplete one (a writer "
-                       "that did not finish leaves only .partial files)");
+      not_a_dataset(
+          ": no metadata.yaml: not a dataset, or an incomplete one (a writer "
+          "that did not finish leaves only .partial files)");
     }
-    return LoadDatasetMetadata(folder / layout::kMetadata);
+    try {
+      return LoadDatasetMetadata(folder / layout::kMetadata);
+    } catch (const ConfigError&) {
+      // A ROS 2 bag folder has a metadata.yaml of its own.
+      if (const std::optional<RawInput> raw = DetectRawInput(folder)) throw InputError(ConvertAdvice(folder, *raw));
+      throw;
+    }
   }
 
   std::optional<ImuSample> ReadImu() {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <type_traits>
 #include <utility>
 
@@ -27,13 +28,13 @@ std::string KindOf(const FieldPointer& field) {
 // Where the fields are and what is set elsewhere.
 class KeyCollector : public FieldVisitor {
  public:
-  std::map<std::string, FieldPointer> fields;
+  std::set<std::string> fields;
   std::map<std::string, std::string> elsewhere;
   std::vector<std::string> order;
 
  protected:
-  void OnField(const std::string& key, FieldPointer value, const char* /*unit*/) override {
-    fields.emplace(key, value);
+  void OnField(const std::string& key, FieldPointer /*value*/, const char* /*unit*/) override {
+    fields.insert(key);
     order.push_back(key);
   }
   void OnElsewhere(const std::string& key, const char* where) override { elsewhere.emplace(key, where); }
@@ -100,7 +101,6 @@ class Lister : public FieldVisitor {
           using T = std::remove_pointer_t<decltype(p)>;
           if constexpr (std::is_same_v<T, bool>) return *p;
           if constexpr (std::is_same_v<T, double>) return *p;
-          if constexpr (std::is_same_v<T, int>) return static_cast<std::int64_t>(*p);
           return static_cast<std::int64_t>(*p);
         },
         field);

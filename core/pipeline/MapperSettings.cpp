@@ -62,7 +62,7 @@ LocalizerOptions PriorMapOptionsFor(const Platform& platform) {
 std::vector<MapperSettingRow> ListMapperSettings(const Platform& platform) {
   MapperOptions defaults;
   MapperOptions derived = MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
-  MapperOptions effective = MapperOptionsFor(platform);
+  MapperOptions effective = Apply(SettingsOf(platform), derived, true);
   const std::vector<options::FieldRow> default_rows = options::ListFields(VisitOf(&defaults));
   const std::vector<options::FieldRow> derived_rows = options::ListFields(VisitOf(&derived));
   const std::vector<options::FieldRow> rows = options::ListFields(VisitOf(&effective));
