@@ -32,7 +32,13 @@ LoopClosureCheck CheckLoopClosures(const std::vector<ClaimedMotion>& claims, con
     ++check.checked;
     check.max_translation_error_m = std::max(check.max_translation_error_m, translation_m);
     check.max_rotation_error_deg = std::max(check.max_rotation_error_deg, rotation_deg);
-    if (translation_m > check.false_translation_m || rotation_deg > check.false_rotation_deg) ++check.false_closures;
+    if (translation_m > check.false_translation_m || rotation_deg > check.false_rotation_deg) {
+      ++check.false_closures;
+      // error = truth^-1 * claim, so its translation is the claim's end position minus the truth's, in the
+      // truth's end frame; rotated into the start frame it reads along the path.
+      const Eigen::Vector3d offset_start = (start->inverse() * *end).linear() * error.translation();
+      check.false_list.push_back({claim.start_time_s, claim.end_time_s, offset_start, rotation_deg});
+    }
   }
   return check;
 }

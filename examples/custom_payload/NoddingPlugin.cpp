@@ -5,6 +5,7 @@
 // (no wrap-around). The SDK does the heavy lifting:
 //   CoreParameters   the paper's per-platform parameters (Table 1),
 //   MotorMount       T_body_lidar(theta) = T_body_motor * Rot(axis, theta) * T_motor_lidar,
+//   MotorMotion      how the servo nods (what `unimap simulate` plays back),
 //   EncoderTrack     servo angle at any time (linear interpolation),
 //   LineScanToRawScan beam firing times for lines that come without them,
 //   DeskewScan       rigid-body deskew to the line's end time.
@@ -18,6 +19,7 @@
 #include <unimap/Deskew.hpp>
 #include <unimap/Errors.hpp>
 #include <unimap/LineScan.hpp>
+#include <unimap/MotorMotion.hpp>
 #include <unimap/MotorMount.hpp>
 #include <unimap/PayloadPlugin.hpp>
 #include <unimap/PluginExport.hpp>
@@ -51,6 +53,18 @@ unimap::MotorMount DefaultServo() {
   servo.encoder_offset_deg = 0.0;
   servo.encoder_direction = 1;
   return servo;
+}
+
+// The servo nods between -45 and +45 deg, one cycle (down -> up -> down)
+// every 2 s, slowing at the ends like a hobby servo (sine).
+unimap::MotorMotion DefaultNod() {
+  unimap::MotorMotion nod;
+  nod.kind = unimap::MotorMotion::Kind::kOscillating;
+  nod.min_deg = -45.0;
+  nod.max_deg = 45.0;
+  nod.period_s = 2.0;
+  nod.profile = unimap::MotorMotion::Profile::kSine;
+  return nod;
 }
 
 // Table 1 for a nodding Hokuyo: one nod up (1 s at 0.5 Hz) = 40 lines.
@@ -141,11 +155,13 @@ class NoddingPlugin final : public unimap::PayloadPlugin {
   }
 
   // CoreParameters + MotorMount keys (extrinsic.body_motor.*,
-  // extrinsic.motor_lidar.*, motor.*) + lidar.*.
+  // extrinsic.motor_lidar.*, motor.*) + MotorMotion keys (motor.motion, ...)
+  // + lidar.*.
   unimap::ParameterSet Defaults() const override {
     unimap::ParameterSet set;
     DefaultCore().AddTo(&set);
     DefaultServo().AddTo(&set);
+    DefaultNod().AddTo(&set);
     AddScannerKeys(LineScanner{}, &set);
     return set;
   }
@@ -156,6 +172,7 @@ class NoddingPlugin final : public unimap::PayloadPlugin {
     Defaults().Validate(parameters);
     const unimap::CoreParameters core = unimap::CoreParameters::FromMap(parameters);
     const unimap::MotorMount servo = unimap::MotorMount::FromMap(parameters);
+    unimap::MotorMotion::FromMap(parameters);  // checked; the mapper follows the encoder
     const LineScanner scanner = ScannerFromMap(parameters);
     core_ = core;
     servo_ = servo;

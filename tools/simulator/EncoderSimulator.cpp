@@ -2,17 +2,16 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace unimap::sim {
 
-EncoderSimulator::EncoderSimulator(const EncoderConfig& config)
-    : config_(config), rate_rad_s_(2.0 * M_PI * config.motor_rate_rpm / 60.0) {
+EncoderSimulator::EncoderSimulator(const EncoderConfig& config) : config_(config) {
   if (!(std::isfinite(config_.rate_hz) && config_.rate_hz > 0.0)) {
     throw std::invalid_argument("encoder rate must be positive");
   }
-  if (!(std::isfinite(config_.motor_rate_rpm) && config_.motor_rate_rpm > 0.0)) {
-    throw std::invalid_argument("motor rate must be positive");
-  }
+  std::string why;
+  if (!config_.motion.IsValid(&why)) throw std::invalid_argument("motor motion: " + why);
   if (!(std::isfinite(config_.resolution_rad) && config_.resolution_rad >= 0.0 &&
         config_.resolution_rad < 2.0 * M_PI)) {
     throw std::invalid_argument("encoder resolution must be in [0, 2 pi)");
@@ -24,10 +23,15 @@ EncoderSimulator::EncoderSimulator(const EncoderConfig& config)
 
 double EncoderSimulator::SampleTime(std::size_t k) const { return static_cast<double>(k) / config_.rate_hz; }
 
-double EncoderSimulator::TrueAngle(double time_s) const { return config_.initial_angle_rad + rate_rad_s_ * time_s; }
+double EncoderSimulator::TrueAngle(double time_s) const {
+  return config_.initial_angle_rad + config_.motion.EncoderAngleRad(time_s);
+}
 
 EncoderSample EncoderSimulator::Measure(double time_s) const {
-  return EncoderSample{time_s, Quantise(TrueAngle(time_s), config_.resolution_rad)};
+  const double angle = TrueAngle(time_s);
+  if (config_.motion.Wraps()) return EncoderSample{time_s, Quantise(angle, config_.resolution_rad)};
+  const double step = config_.resolution_rad;
+  return EncoderSample{time_s, step > 0.0 ? step * std::round(angle / step) : angle};
 }
 
 double EncoderSimulator::Wrap(double angle_rad) {

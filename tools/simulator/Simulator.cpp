@@ -131,13 +131,14 @@ SimulationSummary Simulator::Run() {
 
   // Motor encoder: the recorded one is quantised, the true track feeds the geometry.
   const bool uses_encoder = plugin.UsesEncoder();
-  EncoderConfig encoder_config{s.encoder_rate_hz, s.encoder_resolution_rad, 1.0, 0.0};
+  EncoderConfig encoder_config{s.encoder_rate_hz, s.encoder_resolution_rad, MotorMotion{}, 0.0};
   if (uses_encoder) {
-    if (!platform.parameters.Contains("motor.rate_rpm")) {
-      throw ConfigError(platform.file, 0, "motor.rate_rpm",
-                        "the payload uses a motor encoder but declares no motor rate to simulate");
+    try {
+      encoder_config.motion = MotorMotion::FromMap(platform.parameters);
+    } catch (const ConfigError& e) {
+      throw ConfigError(platform.file, 0, e.key(),
+                        std::string("the payload uses a motor encoder; to simulate it: ") + e.reason());
     }
-    encoder_config.motor_rate_rpm = platform.parameters.GetDouble("motor.rate_rpm");
   }
   const EncoderSimulator encoder(encoder_config);
   EncoderTrack true_track;

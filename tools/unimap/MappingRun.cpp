@@ -94,6 +94,15 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       o["max_rotation_error_deg"] = check.max_rotation_error_deg;
       o["false_translation_m"] = check.false_translation_m;
       o["false_rotation_deg"] = check.false_rotation_deg;
+      Json list = Json::array();
+      for (const eval::FalseClosure& f : check.false_list) {
+        const Eigen::Vector3d& e = f.translation_error_m;
+        list.push_back({{"submap_start_time_s", f.start_time_s},
+                        {"time_s", f.end_time_s},
+                        {"translation_error_start_frame_m", {e.x(), e.y(), e.z()}},
+                        {"rotation_error_deg", f.rotation_error_deg}});
+      }
+      o["false"] = list;
       outputs.extras.emplace_back("loop_closure_check", o);
       if (check.false_closures > 0) {
         std::cout << "  note: " << check.false_closures << " of " << check.checked

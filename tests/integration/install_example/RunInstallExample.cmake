@@ -1,11 +1,12 @@
 # cmake -P script behind the integration.install_example test. Inputs (-D):
 #   UNIMAP_BUILD_DIR    the unimap build tree to install
 #   EXAMPLE_SOURCE_DIR  examples/custom_payload
+#   SCENARIO_FILE       a scenario the example payload is simulated in
 #   WORK_DIR            scratch folder (recreated): prefix/ and build/
 #   GENERATOR, CXX_COMPILER, BUILD_TYPE  used for the example's build
 # Every step must succeed; the first failure ends the test with its name.
 cmake_minimum_required(VERSION 3.22)
-foreach(var UNIMAP_BUILD_DIR EXAMPLE_SOURCE_DIR WORK_DIR GENERATOR)
+foreach(var UNIMAP_BUILD_DIR EXAMPLE_SOURCE_DIR WORK_DIR GENERATOR SCENARIO_FILE)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "RunInstallExample.cmake: -D${var}=... is required")
   endif()
@@ -63,3 +64,31 @@ foreach(plugin ${installed_plugins})
 endforeach()
 run_step("installed plugins" "${CMAKE_COMMAND}" -E env --unset=UNIMAP_CONFORMANCE_PLUGINS
   "${example_build}/nodding_2d_conformance" ${plugin_args} --gtest_brief=1)
+
+# 5. The installed `unimap simulate` plays the example's servo (MotorMotion:
+#    oscillating -45..+45 deg, 2 s) from the plugin's own parameters; the
+#    recorded encoder reads the servo angle as it is (negative, unwrapped).
+set(sim_out "${WORK_DIR}/nodding_sim")
+file(WRITE "${WORK_DIR}/nodding.yaml" "plugin: nodding_2d\n")
+file(GLOB_RECURSE installed_unimap "${prefix}/bin/unimap")
+run_step("simulate the example" "${CMAKE_COMMAND}" -E env "UNIMAP_PLUGIN_PATH=${example_build}"
+  ${installed_unimap} simulate --scenario "${SCENARIO_FILE}" --payload "${WORK_DIR}/nodding.yaml"
+  --duration-s 4 --out "${sim_out}")
+file(STRINGS "${sim_out}/encoder.csv" encoder_lines REGEX "^[-0-9]")
+list(LENGTH encoder_lines encoder_count)
+set(lowest 1000)
+set(highest -1000)
+foreach(line ${encoder_lines})
+  string(REGEX REPLACE "^[^ ]+ " "" angle "${line}")
+  if(angle LESS lowest)
+    set(lowest ${angle})
+  endif()
+  if(angle GREATER highest)
+    set(highest ${angle})
+  endif()
+endforeach()
+message(STATUS "nodding encoder: ${encoder_count} samples, ${lowest} .. ${highest} rad")
+# -45 and +45 deg are -0.7854 and 0.7854 rad; the scenario's encoder quantises to its counts.
+if(encoder_count LESS 100 OR lowest GREATER -0.78 OR lowest LESS -0.79 OR highest LESS 0.78 OR highest GREATER 0.79)
+  message(FATAL_ERROR "the simulated servo does not nod -45..+45 deg: ${encoder_count} samples, ${lowest} .. ${highest}")
+endif()

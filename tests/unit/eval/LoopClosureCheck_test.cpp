@@ -52,6 +52,12 @@ TEST(LoopClosureCheck, ClaimsOffByMoreThanTheLimitsAreFalse) {
   EXPECT_EQ(check.false_closures, 2u);
   EXPECT_NEAR(check.max_translation_error_m, 1.5, 1e-9);
   EXPECT_NEAR(check.max_rotation_error_deg, 10.0, 1e-6);
+  ASSERT_EQ(check.false_list.size(), 2u);
+  EXPECT_DOUBLE_EQ(check.false_list[0].start_time_s, 2.0);
+  EXPECT_DOUBLE_EQ(check.false_list[0].end_time_s, 15.0);
+  // The claim's end is 1.5 m above the truth's, in the start body's frame.
+  EXPECT_NEAR((check.false_list[0].translation_error_m - Eigen::Vector3d(0.0, 0.0, 1.5)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(check.false_list[1].rotation_error_deg, 10.0, 1e-6);
 }
 
 TEST(LoopClosureCheck, ClaimsOutsideTheTruthAreNotChecked) {

@@ -38,8 +38,18 @@ TEST(EncoderSimulator, QuantisesToTheNearestCount) {
   }
 }
 
+// A constant-rate motor's encoder config.
+EncoderConfig Spinning(double rate_hz, double resolution_rad, double rpm, double initial_rad) {
+  EncoderConfig config;
+  config.rate_hz = rate_hz;
+  config.resolution_rad = resolution_rad;
+  config.motion.rate_rpm = rpm;
+  config.initial_angle_rad = initial_rad;
+  return config;
+}
+
 TEST(EncoderSimulator, TurnsAtTheMotorRate) {
-  const EncoderSimulator enc({100.0, 0.0, 30.0, 0.5});
+  const EncoderSimulator enc(Spinning(100.0, 0.0, 30.0, 0.5));
   EXPECT_DOUBLE_EQ(enc.SampleTime(250), 2.5);
   EXPECT_NEAR(enc.TrueAngle(0.0), 0.5, 1e-15);
   EXPECT_NEAR(enc.TrueAngle(1.0) - enc.TrueAngle(0.0), M_PI, 1e-12);  // 30 rpm = half a turn per second
@@ -51,7 +61,7 @@ TEST(EncoderSimulator, TurnsAtTheMotorRate) {
 // EncoderTrack they follow the true angle to within half a count.
 TEST(EncoderSimulator, SamplesUnwrapBackToTheTrueAngle) {
   const double res = kTwoPi / 1024;
-  const EncoderSimulator enc({100.0, res, 45.0, 1.0});
+  const EncoderSimulator enc(Spinning(100.0, res, 45.0, 1.0));
   std::vector<EncoderSample> samples;
   for (std::size_t k = 0; k <= 1000; ++k) samples.push_back(enc.Measure(enc.SampleTime(k)));
   for (const EncoderSample& s : samples) {
@@ -67,9 +77,39 @@ TEST(EncoderSimulator, SamplesUnwrapBackToTheTrueAngle) {
 }
 
 TEST(EncoderSimulator, RejectsBadConfig) {
-  EXPECT_THROW(EncoderSimulator({0.0, 0.0, 30.0, 0.0}), std::invalid_argument);
-  EXPECT_THROW(EncoderSimulator({100.0, -1.0, 30.0, 0.0}), std::invalid_argument);
-  EXPECT_THROW(EncoderSimulator({100.0, 0.0, 0.0, 0.0}), std::invalid_argument);
+  EXPECT_THROW(EncoderSimulator(Spinning(0.0, 0.0, 30.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(EncoderSimulator(Spinning(100.0, -1.0, 30.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(EncoderSimulator(Spinning(100.0, 0.0, 0.0, 0.0)), std::invalid_argument);
+  EncoderConfig servo;
+  servo.motion.kind = MotorMotion::Kind::kOscillating;
+  servo.motion.max_deg = servo.motion.min_deg;  // empty range
+  EXPECT_THROW(EncoderSimulator{servo}, std::invalid_argument);
+}
+
+// A servo reports its angle as it is (no wrap), quantised; unwrapped by the
+// SDK's EncoderTrack it follows the true angle to within half a count.
+TEST(EncoderSimulator, ServoReadingsAreNotWrapped) {
+  EncoderConfig servo;
+  servo.rate_hz = 50.0;
+  servo.resolution_rad = kTwoPi / 4096;
+  servo.motion.kind = MotorMotion::Kind::kOscillating;
+  servo.motion.min_deg = -45.0;
+  servo.motion.max_deg = 45.0;
+  servo.motion.period_s = 2.0;
+  const EncoderSimulator enc(servo);
+  EXPECT_NEAR(enc.TrueAngle(0.0), -M_PI / 4.0, 1e-12);
+  EXPECT_NEAR(enc.TrueAngle(1.0), M_PI / 4.0, 1e-12);
+  std::vector<EncoderSample> samples;
+  double lowest = 1e9;
+  for (std::size_t k = 0; k <= 500; ++k) {
+    samples.push_back(enc.Measure(enc.SampleTime(k)));
+    lowest = std::min(lowest, samples.back().angle_rad);
+  }
+  EXPECT_NEAR(lowest, -M_PI / 4.0, 0.5 * servo.resolution_rad + 1e-12);  // negative: not wrapped
+  const EncoderTrack track(samples);
+  for (double t = 0.0; t <= 10.0; t += 0.013) {
+    EXPECT_NEAR(track.AngleAt(t), enc.TrueAngle(t), 0.5 * servo.resolution_rad + 2e-3) << t;
+  }
 }
 
 }  // namespace
