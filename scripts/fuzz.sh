@@ -19,7 +19,7 @@ RELEASE_DIR="${RELEASE_DIR:-build}"
 FUZZ_RUNS="${FUZZ_RUNS:-1000000}"
 FUZZ_SECONDS="${FUZZ_SECONDS:-3600}"
 DATA=../shared/data
-ALL="platform_yaml metadata_yaml dataset_streams scans_bin tum kitti pcd ply carmen rosbag ros2_cdr bt"
+ALL="platform_yaml metadata_yaml dataset_streams scans_bin tum kitti pcd ply carmen rosbag ros2_cdr ros1_definition bt"
 HARNESSES="${*:-$ALL}"
 
 sanitize="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
@@ -80,6 +80,7 @@ corpus_for() {  # fills $BUILD_DIR/corpus/$1 with that harness's seeds
             done
             [ -f "$c/intel.clf" ] && head -c 8000 "$c/intel.clf" | bzip2 > "$c/intel-head.clf.bz2" ;;
     rosbag) [ -f "$DATA/rosbag1_stage_laserscan.bag" ] && cp "$DATA/rosbag1_stage_laserscan.bag" "$c/" ;;
+    ros1_definition) cp tests/fuzz/regressions/ros1_definition/* "$c/" ;;  # the tilting stand's LaserScanAngle
     ros2_cdr)  # a type byte (the harness's switch) + the first messages of the nodding recording
       db="$DATA/nodding_rplidar/lidarServo_0.db3"
       if [ -f "$db" ] && command -v python3 >/dev/null; then

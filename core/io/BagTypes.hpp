@@ -23,14 +23,16 @@ namespace unimap::io {
 // the same with "/msg/" ("sensor_msgs/msg/PointCloud2").
 struct RosbagTopics {
   std::string cloud;                 // sensor_msgs/PointCloud2 -> RawScan
-  std::string laser;                 // sensor_msgs/LaserScan -> LineScan
+  std::string laser;                 // sensor_msgs/LaserScan -> LineScan (ROS 1 also: a message holding one)
   std::string imu;                   // sensor_msgs/Imu -> ImuSample
   std::string joint;                 // sensor_msgs/JointState -> EncoderSample (motor angle)
   std::string odometry;              // nav_msgs/Odometry -> OdometrySample
   std::string groundtruth = "none";  // nav_msgs/Odometry or geometry_msgs/PoseStamped -> StampedPose; never auto
-  std::string angle;                 // ROS 2 only: std_msgs/msg/Float32, Float64 or Int32 -> EncoderSample
-                                     // (motor angle in RosbagReaderOptions::angle_unit, stamped with the
-                                     // bag's receive time: these messages have no header)
+  std::string angle;                 // std_msgs Float32, Float64 or Int32 -> EncoderSample (motor angle in
+                                     // RosbagReaderOptions::angle_unit; stamped with the bag's receive time:
+                                     // these messages have no header). ROS 1 also: any message with a
+                                     // number field named by RosbagReaderOptions::angle_field, stamped by
+                                     // its header, by the scan it comes with, else by the receive time
 };
 
 // Unit of a scalar angle topic's number (it carries none).
@@ -43,7 +45,10 @@ enum class AngleUnit {
 struct RosbagReaderOptions {
   RosbagTopics topics;                       // which topics to read
   std::string joint_name;                    // JointState: joint whose position is the motor angle; empty = the first
-  AngleUnit angle_unit = AngleUnit::kUnset;  // unit of the scalar angle topic (ROS 2); required when one is read
+  AngleUnit angle_unit = AngleUnit::kUnset;  // unit of the angle topic's number; required when one is read
+  std::string angle_field;                   // ROS 1: the angle topic's number field ('.' for nested fields),
+                                             // read by the message definition the bag carries; empty = "data"
+                                             // of a std_msgs scalar
 };
 
 // A bag topic, as listed in the bag's index.
@@ -51,6 +56,7 @@ struct RosbagTopicInfo {
   std::string topic;
   std::string datatype;      // e.g. "sensor_msgs/PointCloud2" (ROS 2: "sensor_msgs/msg/PointCloud2")
   std::size_t messages = 0;  // messages on the topic
+  std::string definition;    // ROS 1: the message definition of the topic's connection (empty for ROS 2)
 };
 
 // One message turned into unimap's types; times are header stamps (the

@@ -79,7 +79,7 @@ class Ros2BagReader::Impl : public BagState {
       file.db = std::make_unique<Ros2BagDatabase>(path);
       for (const Ros2BagDatabase::Topic& t : file.db->topics()) {
         RosbagTopicInfo* info = Find(t.name);
-        if (info == nullptr) info = &topics.emplace_back(RosbagTopicInfo{t.name, t.type, 0});
+        if (info == nullptr) info = &topics.emplace_back(RosbagTopicInfo{t.name, t.type, 0, ""});
         if (info->datatype != t.type) {
           throw InputError(path.string() + ": topic " + t.name + " is " + t.type + ", elsewhere in the bag " +
                            info->datatype);

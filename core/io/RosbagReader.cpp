@@ -1,8 +1,12 @@
 #include "io/RosbagReader.hpp"
 
+#include <cmath>
+#include <cstring>
+#include <deque>
 #include <optional>
 
 #include "io/BagSupport.hpp"
+#include "io/Ros1MessageDefinition.hpp"
 #include "io/Ros2BagMetadata.hpp"
 #include "io/RosbagRecords.hpp"
 #include "unimap/Errors.hpp"
@@ -10,6 +14,7 @@
 #if UNIMAP_WITH_ROSBAG
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/serialization.h>
 #include <rosbag/bag.h>
 #include <rosbag/exceptions.h>
 #include <rosbag/view.h>
@@ -35,8 +40,9 @@ void RejectRos2Bag(const std::filesystem::path& bag) {
 #if UNIMAP_WITH_ROSBAG
 namespace {
 
-// What a selected topic is read as.
-enum class Stream { kCloud, kLaser, kImu, kJoint, kOdometry, kGroundTruth };
+// What a selected topic is read as (kLaserWithAngle: one message gives a
+// line and the motor angle).
+enum class Stream { kCloud, kLaser, kImu, kJoint, kOdometry, kGroundTruth, kAngle, kLaserWithAngle };
 
 constexpr const char* kPointCloud2 = "sensor_msgs/PointCloud2";
 constexpr const char* kLaserScan = "sensor_msgs/LaserScan";
@@ -44,6 +50,30 @@ constexpr const char* kImu = "sensor_msgs/Imu";
 constexpr const char* kJointState = "sensor_msgs/JointState";
 constexpr const char* kOdometry = "nav_msgs/Odometry";
 constexpr const char* kPoseStamped = "geometry_msgs/PoseStamped";
+constexpr const char* kFloat32 = "std_msgs/Float32";
+constexpr const char* kFloat64 = "std_msgs/Float64";
+constexpr const char* kInt32 = "std_msgs/Int32";
+
+// The definition of a topic's type, or nullptr when it cannot be parsed.
+std::unique_ptr<Ros1MessageDefinition> ParseDefinition(const RosbagTopicInfo& t) {
+  try {
+    return std::make_unique<Ros1MessageDefinition>(t.datatype, t.definition);
+  } catch (const InputError&) {
+    return nullptr;
+  }
+}
+
+// The path of the one LaserScan field a custom type holds, "" if none or several.
+std::string LaserField(const Ros1MessageDefinition& d) {
+  const std::vector<std::string> paths = d.FieldsOfType(kLaserScan);
+  return paths.size() == 1 ? paths.front() : "";
+}
+
+// A number type the angle may have.
+bool IsNumber(const std::string& type) {
+  return type == "float64" || type == "float32" || type == "int8" || type == "uint8" || type == "int16" ||
+         type == "uint16" || type == "int32" || type == "uint32" || type == "int64" || type == "uint64";
+}
 
 // Header stamp in seconds, or the bag's receive time when the stamp is zero.
 double StampOr(const ros::Time& stamp, const rosbag::MessageInstance& m) {
@@ -67,6 +97,13 @@ class RosbagReader::Impl : public BagState {
   std::map<std::string, Stream> stream_of;  // selected topic -> stream
   std::unique_ptr<rosbag::View> view;       // messages of the selected topics
   rosbag::View::iterator it;                // next message
+  // Custom messages read by their definition: topic -> definition, and the
+  // paths of the LaserScan and of the angle within them.
+  std::map<std::string, std::unique_ptr<Ros1MessageDefinition>> definitions;
+  std::string laser_path;             // "" : the laser topic is a sensor_msgs/LaserScan
+  std::string angle_path = "data";    // the angle topic's number field
+  std::deque<RosbagMessage> pending;  // second outputs of a message (the angle beside its line)
+  std::vector<std::uint8_t> buffer;   // one serialized message
 
   [[noreturn]] void Fail(const std::string& reason) const { throw InputError(label + ": " + reason); }
 
@@ -91,6 +128,7 @@ class RosbagReader::Impl : public BagState {
       info.topic = c->topic;
       info.datatype = c->datatype;
       info.messages = rosbag::View(bag, rosbag::TopicQuery(c->topic)).size();
+      info.definition = c->msg_def;
       topics.push_back(info);
     }
   }
@@ -99,20 +137,73 @@ class RosbagReader::Impl : public BagState {
     const RosbagTopics& request = options.topics;
     selected.groundtruth = Resolve(request.groundtruth, {kOdometry, kPoseStamped}, "--groundtruth-topic", false);
     selected.cloud = Resolve(request.cloud, {kPointCloud2}, "--cloud-topic", true);
-    selected.laser = Resolve(request.laser, {kLaserScan}, "--laser-topic", true);
+    // Custom types read by definition: those holding one LaserScan can be
+    // the laser topic; with --angle-field, those with that number field the
+    // angle topic.
+    std::vector<std::string> laser_types = {kLaserScan};
+    std::vector<std::string> angle_types = {kFloat32, kFloat64, kInt32};
+    if (!options.angle_field.empty()) angle_types.clear();
+    for (const RosbagTopicInfo& t : topics) {
+      const std::unique_ptr<Ros1MessageDefinition> d = ParseDefinition(t);
+      if (!d || t.datatype == kLaserScan) continue;
+      if (!LaserField(*d).empty()) laser_types.push_back(t.datatype);
+      if (!options.angle_field.empty() && IsNumber(d->TypeOf(options.angle_field))) {
+        angle_types.push_back(t.datatype);
+      }
+    }
+    selected.laser = Resolve(request.laser, laser_types, "--laser-topic", true);
     selected.imu = Resolve(request.imu, {kImu}, "--imu-topic", true);
     selected.joint = Resolve(request.joint, {kJointState}, "--joint-topic", true);
     selected.odometry = Resolve(request.odometry, {kOdometry}, "--odometry-topic", true);
-    if (!request.angle.empty() && request.angle != "none") {
-      Fail("--angle-topic " + request.angle + ": scalar angle topics are read from ROS 2 bags only (--format ros2)");
+    if (!options.angle_field.empty() && !request.angle.empty() && request.angle != "none") {
+      const RosbagTopicInfo* info = Find(request.angle);
+      const std::unique_ptr<Ros1MessageDefinition> d = info ? ParseDefinition(*info) : nullptr;
+      if (d && !IsNumber(d->TypeOf(options.angle_field))) {
+        const std::string type = d->TypeOf(options.angle_field);
+        Fail("--angle-field " + options.angle_field + ": topic " + request.angle + " (" + info->datatype + ") has " +
+             (type.empty() ? "no field of that name" : "it as " + type + ", not a number"));
+      }
     }
+    // The angle is never picked by itself from a custom type: only std_msgs scalars are auto.
+    selected.angle =
+        angle_types.empty() ? "" : Resolve(request.angle, angle_types, "--angle-topic", options.angle_field.empty());
+    if (!options.angle_field.empty() && selected.angle.empty()) {
+      Fail("--angle-field " + options.angle_field +
+           ": name the topic with --angle-topic (no topic's message has "
+           "a number field of that name, or none was named)");
+    }
+    if (!selected.angle.empty() && !selected.joint.empty()) {
+      Fail("both " + selected.joint + " (JointState) and " + selected.angle +
+           " (angle) give the motor angle; choose one with --joint-topic none or --angle-topic none");
+    }
+    if (!selected.angle.empty() && options.angle_unit == AngleUnit::kUnset) {
+      Fail("angle topic " + selected.angle +
+           " carries a bare number: give its unit with --angle-unit deg|rad "
+           "(or --angle-topic none)");
+    }
+    for (const std::string* topic : {&selected.laser, &selected.angle}) {
+      const RosbagTopicInfo* info = topic->empty() ? nullptr : Find(*topic);
+      if (info == nullptr || info->datatype == kLaserScan || definitions.count(*topic) > 0) continue;
+      std::unique_ptr<Ros1MessageDefinition> d = ParseDefinition(*info);
+      if (!d) Fail("topic " + *topic + " (" + info->datatype + "): its message definition cannot be read");
+      definitions.emplace(*topic, std::move(d));
+    }
+    if (!selected.laser.empty() && definitions.count(selected.laser) > 0) {
+      laser_path = LaserField(*definitions.at(selected.laser));
+    }
+    if (!options.angle_field.empty()) angle_path = options.angle_field;
+    const bool laser_with_angle = !selected.laser.empty() && selected.laser == selected.angle;
     const std::pair<const std::string*, Stream> choices[] = {
-        {&selected.cloud, Stream::kCloud},       {&selected.laser, Stream::kLaser},
-        {&selected.imu, Stream::kImu},           {&selected.joint, Stream::kJoint},
-        {&selected.odometry, Stream::kOdometry}, {&selected.groundtruth, Stream::kGroundTruth}};
+        {&selected.cloud, Stream::kCloud},
+        {&selected.laser, laser_with_angle ? Stream::kLaserWithAngle : Stream::kLaser},
+        {&selected.imu, Stream::kImu},
+        {&selected.joint, Stream::kJoint},
+        {&selected.odometry, Stream::kOdometry},
+        {&selected.groundtruth, Stream::kGroundTruth},
+        {&selected.angle, Stream::kAngle}};  // skipped below when it is the laser topic
     std::vector<std::string> names;
     for (const auto& [topic, stream] : choices) {
-      if (topic->empty()) continue;
+      if (topic->empty() || (stream == Stream::kAngle && laser_with_angle)) continue;
       if (!stream_of.emplace(*topic, stream).second) Fail("topic " + *topic + " is chosen for two streams");
       names.push_back(*topic);
     }
@@ -127,11 +218,71 @@ class RosbagReader::Impl : public BagState {
     return false;
   }
 
+  // The serialized bytes of a message, in `buffer`.
+  void ReadBytes(const rosbag::MessageInstance& m) {
+    buffer.resize(m.size());
+    ros::serialization::OStream stream(buffer.data(), static_cast<std::uint32_t>(buffer.size()));
+    m.write(stream);
+  }
+
+  // A header stamp at `path` ("" or a time field), 0 when there is none.
+  double StampAt(const Ros1MessageDefinition& d, const std::string& path) const {
+    if (d.TypeOf(path) != "time") return 0.0;
+    const Ros1MessageDefinition::Span span = d.Locate(buffer.data(), buffer.size(), path);
+    std::uint32_t sec = 0, nsec = 0;
+    std::memcpy(&sec, buffer.data() + span.offset, 4);
+    std::memcpy(&nsec, buffer.data() + span.offset + 4, 4);
+    return static_cast<double>(sec) + 1e-9 * static_cast<double>(nsec);
+  }
+
+  // The motor angle of a message read by definition (ReadBytes first), in
+  // radians; false (a counted skip) when it is not finite.
+  bool AngleOf(const Ros1MessageDefinition& d, const std::string& topic, double* angle_rad) {
+    const double value = d.ReadNumber(buffer.data(), buffer.size(), angle_path);
+    if (!std::isfinite(value)) return Skip(topic + ": non-finite angle");
+    *angle_rad = options.angle_unit == AngleUnit::kDegrees ? value * M_PI / 180.0 : value;
+    return true;
+  }
+
+  // A LaserScan message, or the one inside a custom message.
+  sensor_msgs::LaserScan::ConstPtr LaserOf(const rosbag::MessageInstance& m) {
+    if (laser_path.empty()) return m.instantiate<sensor_msgs::LaserScan>();
+    ReadBytes(m);
+    const Ros1MessageDefinition& d = *definitions.at(m.getTopic());
+    const Ros1MessageDefinition::Span span = d.Locate(buffer.data(), buffer.size(), laser_path);
+    auto scan = boost::make_shared<sensor_msgs::LaserScan>();
+    ros::serialization::IStream in(buffer.data() + span.offset, static_cast<std::uint32_t>(span.length));
+    ros::serialization::deserialize(in, *scan);
+    return scan;
+  }
+
   // Converts one message; false when it was skipped.
   bool Convert(const rosbag::MessageInstance& m, Stream stream, RosbagMessage* out) {
     out->topic = m.getTopic();
     out->receive_s = m.getTime().toSec();
     switch (stream) {
+      case Stream::kAngle: {
+        const auto d = definitions.find(out->topic);
+        if (d == definitions.end()) {
+          return Skip(out->topic + ": message definition differs from the angle topic's");
+        }
+        ReadBytes(m);
+        double angle = 0.0;
+        if (!AngleOf(*d->second, out->topic, &angle)) return false;
+        const double stamp = StampAt(*d->second, "header.stamp");
+        out->stamp_s = stamp > 0.0 ? stamp : out->receive_s;
+        out->data = EncoderSample{out->stamp_s, angle};
+        return true;
+      }
+      case Stream::kLaserWithAngle: {
+        if (!Convert(m, Stream::kLaser, out)) return false;
+        double angle = 0.0;
+        if (!AngleOf(*definitions.at(out->topic), out->topic, &angle)) return false;
+        RosbagMessage encoder = *out;  // the line's stamp: the angle it was taken at
+        encoder.data = EncoderSample{out->stamp_s, angle};
+        pending.push_back(std::move(encoder));
+        return true;
+      }
       case Stream::kCloud: {
         auto cloud = m.instantiate<sensor_msgs::PointCloud2>();
         if (!cloud) return Skip(out->topic + ": message definition differs from sensor_msgs/PointCloud2");
@@ -154,7 +305,7 @@ class RosbagReader::Impl : public BagState {
         return true;
       }
       case Stream::kLaser: {
-        auto scan = m.instantiate<sensor_msgs::LaserScan>();
+        auto scan = LaserOf(m);
         if (!scan) return Skip(out->topic + ": message definition differs from sensor_msgs/LaserScan");
         out->stamp_s = StampOr(scan->header.stamp, m);
         std::optional<LineScan> line = ToLineScan(*scan, out->stamp_s);
@@ -232,6 +383,12 @@ RosbagReader::RosbagReader(const std::filesystem::path& bag, RosbagReaderOptions
 bool RosbagReader::Supported() { return true; }
 
 std::optional<RosbagMessage> RosbagReader::Next() {
+  if (!impl_->pending.empty()) {
+    RosbagMessage message = std::move(impl_->pending.front());
+    impl_->pending.pop_front();
+    ++impl_->stats.delivered[message.topic];
+    return message;
+  }
   if (!impl_->view) return std::nullopt;
   try {
     while (impl_->it != impl_->view->end()) {
@@ -248,6 +405,8 @@ std::optional<RosbagMessage> RosbagReader::Next() {
     impl_->Fail(std::string("damaged bag data: ") + e.what());
   } catch (const ros::Exception& e) {
     impl_->Fail(std::string("cannot decode a message: ") + e.what());
+  } catch (const InputError& e) {
+    impl_->Fail(std::string("cannot decode a message by its definition: ") + e.what());
   }
   return std::nullopt;
 }

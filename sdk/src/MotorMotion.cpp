@@ -48,8 +48,8 @@ double MotorMotion::EncoderAngleRad(double time_s) const {
       const double steps = std::ceil(span_deg / step_deg - 1e-9);
       const double half_s = steps * (dwell_s + step_s);
       const double t = std::fmod(time_s, 2.0 * half_s);
-      const double deg = t < half_s ? min_deg + SteppingUp(*this, t, span_deg)
-                                    : max_deg - SteppingUp(*this, t - half_s, span_deg);
+      const double deg =
+          t < half_s ? min_deg + SteppingUp(*this, t, span_deg) : max_deg - SteppingUp(*this, t - half_s, span_deg);
       return deg * kDegToRad;
     }
   }

@@ -21,7 +21,7 @@ struct ConvertOptions {
   std::string format;                    // kitti | carmen | rosbag | ros2
   std::string carmen_odometry = "auto";  // auto | odom | flaser
   double carmen_fov_deg = 180.0;         // FLASER beams span
-  std::string angle_unit;                // ros2 scalar angle topic: deg | rad; "" = not given
+  std::string angle_unit;                // angle topic's number: deg | rad; "" = not given
 };
 
 void PrintReport(const std::string& format, const io::ConversionReport& report, std::ostream& out) {
@@ -55,13 +55,11 @@ int RunConvert(ConvertOptions options) {
           {"flaser", io::CarmenOdometrySource::kLaserFields}};
       c.carmen_odometry = sources.at(options.carmen_odometry);
       report = io::ConvertCarmen(c);
-    } else if (options.format == "rosbag") {
-      report = io::ConvertRosbag(c);
     } else {
       const std::map<std::string, io::AngleUnit> units = {
           {"", io::AngleUnit::kUnset}, {"deg", io::AngleUnit::kDegrees}, {"rad", io::AngleUnit::kRadians}};
       c.rosbag.angle_unit = units.at(options.angle_unit);
-      report = io::ConvertRos2Bag(c);
+      report = options.format == "rosbag" ? io::ConvertRosbag(c) : io::ConvertRos2Bag(c);
     }
     PrintReport(options.format, report, std::cout);
     if (report.interrupted) {
@@ -131,7 +129,8 @@ void AddConvertCommand(CLI::App* app) {
   cmd->add_option("--cloud-topic", topics.cloud,
                   "rosbag, ros2: sensor_msgs/PointCloud2 topic (default: the only one; 'none')");
   cmd->add_option("--laser-topic", topics.laser,
-                  "rosbag, ros2: sensor_msgs/LaserScan topic (default: the only one; 'none')");
+                  "rosbag, ros2: sensor_msgs/LaserScan topic (default: the only one; 'none'); rosbag: also a "
+                  "custom message holding one LaserScan field");
   cmd->add_option("--imu-topic", topics.imu, "rosbag, ros2: sensor_msgs/Imu topic (default: the only one; 'none')");
   cmd->add_option("--joint-topic", topics.joint,
                   "rosbag, ros2: sensor_msgs/JointState motor topic (default: the only one)");
@@ -147,9 +146,14 @@ void AddConvertCommand(CLI::App* app) {
                   "rosbag, ros2: nav_msgs/Odometry or geometry_msgs/PoseStamped topic written as groundtruth.tum")
       ->capture_default_str();
   cmd->add_option("--angle-topic", topics.angle,
-                  "ros2: std_msgs/msg/Float32, Float64 or Int32 motor angle topic, stamped with the bag's receive "
-                  "time (default: the only one; 'none')");
-  cmd->add_option("--angle-unit", options->angle_unit, "ros2: unit of the --angle-topic number (required with one)")
+                  "rosbag, ros2: std_msgs Float32, Float64 or Int32 motor angle topic, stamped with the bag's receive "
+                  "time (default: the only one; 'none'); rosbag: with --angle-field, any message type (it may be "
+                  "the --laser-topic itself)");
+  cmd->add_option("--angle-field", c.rosbag.angle_field,
+                  "rosbag: the --angle-topic's number field holding the motor angle (e.g. stepAngle; nested with "
+                  "'.'), read by the message definition in the bag");
+  cmd->add_option("--angle-unit", options->angle_unit,
+                  "rosbag, ros2: unit of the --angle-topic number (required with one)")
       ->check(CLI::IsMember({"deg", "rad"}));
   cmd->callback([options]() {
     const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop reading, finish the dataset, exit 128 + signal

@@ -52,6 +52,26 @@ case $case_name in
     code=$(run convert --input "$bag" --format ros2 --angle-unit deg --no-clock-alignment --out "$work/nodding_unaligned")
     [ "$code" = 2 ] || fail "exit $code with --no-clock-alignment, expected 2"
     expect "the topics are on different clocks" ;;
+  convert_rosbag_tilting)
+    # The tilting stand's ROS 1 bag: lines and angles from one custom message (skipped, exit 77, when absent).
+    bag="$src/../shared/data/tilting_hokuyo/room_240.bag"
+    [ -f "$bag" ] || { echo "SKIP: $bag not found"; exit 77; }
+    code=$(run convert --input "$bag" --format rosbag --out "$work/tilting_auto")
+    if grep -q "UNIMAP_WITH_ROSBAG" "$work/$case_name.out"; then echo "SKIP: built without ROS 1 bags"; exit 77; fi
+    [ "$code" = 0 ] || fail "exit $code without an angle"
+    expect "payload fixed_2d"
+    expect "laser topic: /slice"
+    code=$(run convert --input "$bag" --format rosbag --laser-topic /slice --angle-topic /slice \
+      --angle-field tiltAngle --angle-unit deg --out "$work/tilting_bad_field")
+    [ "$code" = 2 ] || fail "exit $code with a field the message lacks, expected 2"
+    expect "--angle-field tiltAngle: topic /slice \(pcg_node/LaserScanAngle\) has no field of that name"
+    code=$(run convert --input "$bag" --format rosbag --laser-topic /slice --angle-topic /slice \
+      --angle-field stepAngle --angle-unit deg --out "$work/tilting")
+    [ "$code" = 0 ] || fail "exit $code"
+    expect "payload rotating_2d"
+    expect "^  scans: +865$"
+    expect "^  encoder: +865$"
+    expect "angle \(encoder\) topic: /slice \(pcg_node/LaserScanAngle, field stepAngle, deg, read by the bag's message definition\): stamped with its line's header stamp" ;;
   config_effective)
     code=$(run config --platform "$src/configs/platforms/rotating_hokuyo.yaml"); [ "$code" = 0 ] || fail "exit $code"
     expect "^plugin: +rotating_2d"
