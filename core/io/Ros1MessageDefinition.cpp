@@ -1,6 +1,7 @@
 #include "io/Ros1MessageDefinition.hpp"
 
 #include <cstring>
+#include <functional>
 #include <set>
 #include <sstream>
 
@@ -12,9 +13,9 @@ namespace {
 // Fixed sizes of the primitives (string: variable, 0 here).
 const std::map<std::string, std::size_t>& Primitives() {
   static const std::map<std::string, std::size_t> sizes = {
-      {"bool", 1},   {"int8", 1},    {"uint8", 1},   {"byte", 1},    {"char", 1},     {"int16", 2},
-      {"uint16", 2}, {"int32", 4},   {"uint32", 4},  {"int64", 8},   {"uint64", 8},   {"float32", 4},
-      {"float64", 8}, {"time", 8},   {"duration", 8}, {"string", 0}};
+      {"bool", 1},    {"int8", 1},  {"uint8", 1},    {"byte", 1},  {"char", 1},   {"int16", 2},
+      {"uint16", 2},  {"int32", 4}, {"uint32", 4},   {"int64", 8}, {"uint64", 8}, {"float32", 4},
+      {"float64", 8}, {"time", 8},  {"duration", 8}, {"string", 0}};
   return sizes;
 }
 
@@ -39,12 +40,15 @@ std::string Resolve(const std::string& name, const std::string& enclosing) {
   return Package(enclosing) + "/" + name;
 }
 
-constexpr int kMaxDepth = 32;  // nesting deeper than this is a definition error (a type containing itself)
+constexpr int kMaxDepth = 32;  // nesting deeper than this is a definition error
+// A type whose fields, expanded through its nested (non-array) types, number
+// more than this is refused: a small text can name a type holding two of
+// the next, 30 deep (2^30 fields).
+constexpr std::size_t kMaxExpandedFields = 100000;
 
 }  // namespace
 
-Ros1MessageDefinition::Ros1MessageDefinition(const std::string& type, const std::string& definition)
-    : type_(type) {
+Ros1MessageDefinition::Ros1MessageDefinition(const std::string& type, const std::string& definition) : type_(type) {
   std::istringstream in(definition);
   std::string line;
   std::string current = type;
@@ -96,6 +100,28 @@ Ros1MessageDefinition::Ros1MessageDefinition(const std::string& type, const std:
       }
     }
   }
+  // No type may hold itself outside an array (it could not be serialized),
+  // and none may expand into too many fields.
+  std::map<std::string, std::size_t> expanded;  // type -> its fields expanded (done)
+  std::set<std::string> open;                   // types being expanded
+  const std::function<std::size_t(const std::string&, int)> expand = [&](const std::string& t, int depth) {
+    if (const auto done = expanded.find(t); done != expanded.end()) return done->second;
+    if (open.count(t) > 0) throw InputError("message definition of " + type + ": " + t + " contains itself");
+    if (depth > kMaxDepth) throw InputError("message definition of " + type + ": types nest too deeply");
+    open.insert(t);
+    std::size_t count = 0;
+    for (const Field& f : types_.at(t)) {
+      count += 1 + (IsPrimitive(f.type) || f.is_array ? 0 : expand(f.type, depth + 1));
+      if (count > kMaxExpandedFields) {
+        throw InputError("message definition of " + type + ": " + t + " expands to more than " +
+                         std::to_string(kMaxExpandedFields) + " fields");
+      }
+    }
+    open.erase(t);
+    expanded[t] = count;
+    return count;
+  };
+  for (const auto& entry : types_) expand(entry.first, 0);
 }
 
 std::size_t Ros1MessageDefinition::SizeOf(const std::string& type, const std::uint8_t* data, std::size_t size,
@@ -144,6 +170,11 @@ std::size_t Ros1MessageDefinition::SizeOfField(const Field& f, const std::uint8_
       throw InputError(type_ + " message of " + std::to_string(size) + " bytes is shorter than its definition");
     }
     return total + static_cast<std::size_t>(bytes);
+  }
+  // Each element takes a byte at least (an array of empty types is no
+  // exception worth reading): more elements than bytes left is a truncation.
+  if (offset + total > size || count > size - offset - total) {
+    throw InputError(type_ + " message of " + std::to_string(size) + " bytes is shorter than its definition");
   }
   for (std::uint64_t i = 0; i < count; ++i) total += SizeOf(f.type, data, size, offset + total, depth);
   return total;

@@ -26,8 +26,9 @@ class Ros1MessageDefinition {
 
   // Parses `definition` for the message type `type` ("pkg/Name"). Throws
   // InputError naming the type and the line for a field whose type is
-  // neither a primitive nor defined in the text, a malformed line or a type
-  // that contains itself.
+  // neither a primitive nor defined in the text, a malformed line, a type
+  // that contains itself (outside an array) or one that expands into more
+  // than 100,000 fields.
   Ros1MessageDefinition(const std::string& type, const std::string& definition);
 
   // Top-level field paths (nested with '.', e.g. "laserScan.header.stamp")
@@ -48,9 +49,9 @@ class Ros1MessageDefinition {
 
  private:
   struct Field {
-    std::string type;        // resolved: a primitive or "pkg/Name"
+    std::string type;  // resolved: a primitive or "pkg/Name"
     std::string name;
-    bool is_array = false;   // T[] or T[N]
+    bool is_array = false;       // T[] or T[N]
     long long fixed_count = -1;  // N for T[N], -1 for T[]
   };
   // Bytes a value of `type` takes at data[offset...]; throws on truncation.

@@ -125,9 +125,26 @@ TEST(Ros1MessageDefinition, UndefinedTypesAndSelfContainingTypesAreErrors) {
   EXPECT_THROW(Ros1MessageDefinition("a/B", "sensor_msgs/LaserScan scan\n"), InputError);  // not defined
   EXPECT_THROW(Ros1MessageDefinition("a/B", "float64[x] bad\n"), InputError);
   EXPECT_THROW(Ros1MessageDefinition("a/B", "justonetoken\n"), InputError);
-  const Ros1MessageDefinition loop("a/B", "B inner\n");  // a/B holds an a/B
-  const std::vector<std::uint8_t> m(64, 0);
-  EXPECT_THROW(loop.Locate(m.data(), m.size(), "inner"), InputError);
+  EXPECT_THROW(Ros1MessageDefinition("a/B", "B inner\n"), InputError);  // a/B holds an a/B
+  // Held through an array it is a tree, and legal: children[] may be empty.
+  const Ros1MessageDefinition tree("a/Node", "float64 value\nNode[] children\n");
+  std::vector<std::uint8_t> leaf;
+  Put<double>(&leaf, 2.5);
+  Put<std::uint32_t>(&leaf, 0);
+  EXPECT_DOUBLE_EQ(tree.ReadNumber(leaf.data(), leaf.size(), "value"), 2.5);
+  // An array claiming more elements than bytes left is a truncation, not a long loop.
+  std::vector<std::uint8_t> lying = leaf;
+  const std::uint32_t many = 0xFFFFFFFFu;
+  std::memcpy(lying.data() + 8, &many, 4);
+  EXPECT_THROW(tree.Locate(lying.data(), lying.size(), "children"), InputError);
+  // Two of the next type, 30 deep: 2^30 fields from a 1 KB text (the fuzzer's out-of-memory).
+  std::string wide = "T0 a\nT0 b\n";
+  for (int k = 0; k < 30; ++k) {
+    wide += "================================================================================\nMSG: x/T" +
+            std::to_string(k) + "\nT" + std::to_string(k + 1) + " a\nT" + std::to_string(k + 1) + " b\n";
+  }
+  wide += "================================================================================\nMSG: x/T30\nfloat64 v\n";
+  EXPECT_THROW(Ros1MessageDefinition("x/Wide", wide), InputError);
 }
 
 }  // namespace

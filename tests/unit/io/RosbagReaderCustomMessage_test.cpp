@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 const fs::path kRoomBag = fs::path(UNIMAP_SHARED_DATA_DIR) / "tilting_hokuyo" / "room_240.bag";
 
-#define SKIP_WITHOUT_ROOM_BAG()                                                                              \
+#define SKIP_WITHOUT_ROOM_BAG()                                                                                      \
   if (!RosbagReader::Supported()) GTEST_SKIP() << "built without UNIMAP_WITH_ROSBAG (librosbag-storage-dev absent)"; \
   if (!fs::exists(kRoomBag)) GTEST_SKIP() << "real data absent: " << kRoomBag << " (../shared/data not present)"
 
