@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "io/BagTypes.hpp"
@@ -25,6 +26,13 @@ class BagReader {
   const RosbagTopics& selected() const { return state().selected; }
   // What has been delivered and skipped so far.
   const RosbagReaderStats& stats() const { return state().stats; }
+  // The message type of a topic of the bag, "" when it has none of that name.
+  std::string DatatypeOf(const std::string& topic) const {
+    for (const RosbagTopicInfo& t : topics()) {
+      if (t.topic == topic) return t.datatype;
+    }
+    return "";
+  }
 
   // The next message of a selected topic; std::nullopt at the end. A message
   // that cannot be converted is a counted skip (stats()); a damaged bag or a

@@ -11,10 +11,7 @@ ConversionReport ConvertRos2Bag(const ConversionOptions& options) {
   ConversionReport report = WriteBagDataset(options, "ros2bag", reader);
   std::string angle = "angle (encoder) topic: (none)";
   if (!selected.angle.empty()) {
-    std::string type;
-    for (const RosbagTopicInfo& t : reader.topics()) {
-      if (t.topic == selected.angle) type = t.datatype;
-    }
+    const std::string type = reader.DatatypeOf(selected.angle);
     const bool degrees = options.rosbag.angle_unit == AngleUnit::kDegrees;
     angle = "angle (encoder) topic: " + selected.angle + " (" + type + ", " + (degrees ? "deg" : "rad") +
             "): its times are the bag's receive times (the message has no header stamp)";

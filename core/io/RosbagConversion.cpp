@@ -9,10 +9,7 @@ ConversionReport ConvertRosbag(const ConversionOptions& options) {
   const RosbagTopics& selected = reader.selected();
   ConversionReport report = WriteBagDataset(options, "rosbag", reader);
   if (!selected.angle.empty()) {
-    std::string type;
-    for (const RosbagTopicInfo& t : reader.topics()) {
-      if (t.topic == selected.angle) type = t.datatype;
-    }
+    const std::string type = reader.DatatypeOf(selected.angle);
     const std::string field = options.rosbag.angle_field.empty() ? "data" : options.rosbag.angle_field;
     const bool degrees = options.rosbag.angle_unit == AngleUnit::kDegrees;
     report.notes.push_back("angle (encoder) topic: " + selected.angle + " (" + type + ", field " + field + ", " +

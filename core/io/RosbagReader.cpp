@@ -143,24 +143,25 @@ class RosbagReader::Impl : public BagState {
     std::vector<std::string> laser_types = {kLaserScan};
     std::vector<std::string> angle_types = {kFloat32, kFloat64, kInt32};
     if (!options.angle_field.empty()) angle_types.clear();
+    std::map<std::string, std::unique_ptr<Ros1MessageDefinition>> parsed;  // topic -> its definition, if readable
     for (const RosbagTopicInfo& t : topics) {
-      const std::unique_ptr<Ros1MessageDefinition> d = ParseDefinition(t);
-      if (!d || t.datatype == kLaserScan) continue;
-      if (!LaserField(*d).empty()) laser_types.push_back(t.datatype);
-      if (!options.angle_field.empty() && IsNumber(d->TypeOf(options.angle_field))) {
+      std::unique_ptr<Ros1MessageDefinition> d = ParseDefinition(t);
+      if (!d) continue;
+      if (t.datatype != kLaserScan && !LaserField(*d).empty()) laser_types.push_back(t.datatype);
+      if (t.datatype != kLaserScan && !options.angle_field.empty() && IsNumber(d->TypeOf(options.angle_field))) {
         angle_types.push_back(t.datatype);
       }
+      parsed.emplace(t.topic, std::move(d));
     }
     selected.laser = Resolve(request.laser, laser_types, "--laser-topic", true);
     selected.imu = Resolve(request.imu, {kImu}, "--imu-topic", true);
     selected.joint = Resolve(request.joint, {kJointState}, "--joint-topic", true);
     selected.odometry = Resolve(request.odometry, {kOdometry}, "--odometry-topic", true);
-    if (!options.angle_field.empty() && !request.angle.empty() && request.angle != "none") {
-      const RosbagTopicInfo* info = Find(request.angle);
-      const std::unique_ptr<Ros1MessageDefinition> d = info ? ParseDefinition(*info) : nullptr;
-      if (d && !IsNumber(d->TypeOf(options.angle_field))) {
-        const std::string type = d->TypeOf(options.angle_field);
-        Fail("--angle-field " + options.angle_field + ": topic " + request.angle + " (" + info->datatype + ") has " +
+    if (!options.angle_field.empty() && parsed.count(request.angle) > 0) {
+      const std::string type = parsed.at(request.angle)->TypeOf(options.angle_field);
+      if (!IsNumber(type)) {
+        Fail("--angle-field " + options.angle_field + ": topic " + request.angle + " (" +
+             Find(request.angle)->datatype + ") has " +
              (type.empty() ? "no field of that name" : "it as " + type + ", not a number"));
       }
     }
@@ -181,12 +182,14 @@ class RosbagReader::Impl : public BagState {
            " carries a bare number: give its unit with --angle-unit deg|rad "
            "(or --angle-topic none)");
     }
+    // The definitions the chosen custom (and std_msgs scalar) topics are read by.
     for (const std::string* topic : {&selected.laser, &selected.angle}) {
-      const RosbagTopicInfo* info = topic->empty() ? nullptr : Find(*topic);
-      if (info == nullptr || info->datatype == kLaserScan || definitions.count(*topic) > 0) continue;
-      std::unique_ptr<Ros1MessageDefinition> d = ParseDefinition(*info);
-      if (!d) Fail("topic " + *topic + " (" + info->datatype + "): its message definition cannot be read");
-      definitions.emplace(*topic, std::move(d));
+      if (topic->empty() || Find(*topic)->datatype == kLaserScan || definitions.count(*topic) > 0) continue;
+      const auto d = parsed.find(*topic);
+      if (d == parsed.end()) {
+        Fail("topic " + *topic + " (" + Find(*topic)->datatype + "): its message definition cannot be read");
+      }
+      definitions.emplace(*topic, std::move(d->second));
     }
     if (!selected.laser.empty() && definitions.count(selected.laser) > 0) {
       laser_path = LaserField(*definitions.at(selected.laser));

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 
 #include "unimap/Errors.hpp"
 
@@ -10,15 +12,16 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
+// The words of motor.motion, with their kinds.
+const std::pair<const char*, MotorMotion::Kind> kKinds[] = {{"constant", MotorMotion::Kind::kConstant},
+                                                            {"oscillating", MotorMotion::Kind::kOscillating},
+                                                            {"stepping", MotorMotion::Kind::kStepping}};
+
 const char* KindName(MotorMotion::Kind kind) {
-  switch (kind) {
-    case MotorMotion::Kind::kOscillating:
-      return "oscillating";
-    case MotorMotion::Kind::kStepping:
-      return "stepping";
-    default:
-      return "constant";
+  for (const auto& [name, k] : kKinds) {
+    if (k == kind) return name;
   }
+  return "constant";
 }
 
 // Position (deg above min) of a stepper going up, time_s after it left min:
@@ -87,7 +90,7 @@ void MotorMotion::AddTo(ParameterSet* set) const {
             std::string(KindName(kind)),
             0.0,
             0.0,
-            {"constant", "oscillating", "stepping"}});
+            {kKinds[0].first, kKinds[1].first, kKinds[2].first}});
   set->Add({"motor.rate_rpm", "", "constant: motor speed (rev/min)", rate_rpm, 0.1, 600.0, {}});
   set->Add({"motor.min_deg", "", "oscillating, stepping: lowest encoder reading (deg)", min_deg, -360.0, 360.0, {}});
   set->Add({"motor.max_deg", "", "oscillating, stepping: highest encoder reading (deg)", max_deg, -360.0, 360.0, {}});
@@ -113,16 +116,13 @@ MotorMotion MotorMotion::FromMap(const ParameterMap& map) {
     }
     m.rate_rpm = map.GetDouble("motor.rate_rpm");
   } else {
-    const std::string& kind = map.GetString("motor.motion");
-    if (kind == "constant") {
-      m.kind = Kind::kConstant;
-    } else if (kind == "oscillating") {
-      m.kind = Kind::kOscillating;
-    } else if (kind == "stepping") {
-      m.kind = Kind::kStepping;
-    } else {
-      throw ConfigError("", 0, "motor.motion", "'" + kind + "' is not constant, oscillating or stepping");
+    const std::string& word = map.GetString("motor.motion");
+    const auto* found =
+        std::find_if(std::begin(kKinds), std::end(kKinds), [&word](const auto& entry) { return word == entry.first; });
+    if (found == std::end(kKinds)) {
+      throw ConfigError("", 0, "motor.motion", "'" + word + "' is not constant, oscillating or stepping");
     }
+    m.kind = found->second;
     auto number = [&map](const char* key, double fallback) {
       return map.Contains(key) ? map.GetDouble(key) : fallback;
     };

@@ -5,6 +5,14 @@
 #include <string>
 
 namespace unimap::sim {
+namespace {
+
+// angle rounded to the nearest multiple of step (step 0: unchanged).
+double RoundTo(double angle_rad, double step_rad) {
+  return step_rad > 0.0 ? step_rad * std::round(angle_rad / step_rad) : angle_rad;
+}
+
+}  // namespace
 
 EncoderSimulator::EncoderSimulator(const EncoderConfig& config) : config_(config) {
   if (!(std::isfinite(config_.rate_hz) && config_.rate_hz > 0.0)) {
@@ -29,9 +37,8 @@ double EncoderSimulator::TrueAngle(double time_s) const {
 
 EncoderSample EncoderSimulator::Measure(double time_s) const {
   const double angle = TrueAngle(time_s);
-  if (config_.motion.Wraps()) return EncoderSample{time_s, Quantise(angle, config_.resolution_rad)};
-  const double step = config_.resolution_rad;
-  return EncoderSample{time_s, step > 0.0 ? step * std::round(angle / step) : angle};
+  return EncoderSample{time_s, config_.motion.Wraps() ? Quantise(angle, config_.resolution_rad)
+                                                      : RoundTo(angle, config_.resolution_rad)};
 }
 
 double EncoderSimulator::Wrap(double angle_rad) {
@@ -44,7 +51,7 @@ double EncoderSimulator::Wrap(double angle_rad) {
 double EncoderSimulator::Quantise(double angle_rad, double resolution_rad) {
   const double wrapped = Wrap(angle_rad);
   if (resolution_rad <= 0.0) return wrapped;
-  return Wrap(resolution_rad * std::round(wrapped / resolution_rad));
+  return Wrap(RoundTo(wrapped, resolution_rad));
 }
 
 }  // namespace unimap::sim
