@@ -269,39 +269,55 @@ Eigen::Vector3f DistanceField::box_max() const { return origin_m_ + dims_f_ * re
 
 float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const {
   // Sample coordinates with voxel centres at integers.
-  const Eigen::Vector3f u = (p_map - origin_m_) * inv_resolution_ - Eigen::Vector3f::Constant(0.5f);
-  if (!u.allFinite() || (u.array() < -1.0f).any() || (u.array() >= dims_f_.array()).any()) {
-    if (gradient_map != nullptr) gradient_map->setZero();
-    return clamp_m_;
-  }
-  const Eigen::Vector3f base = u.array().floor();
-  const Eigen::Vector3i i0 = base.cast<int>();
-  const Eigen::Vector3f t = u - base;
-  // Corner values, c[4 dx + 2 dy + dz] at i0 + (dx, dy, dz).
-  float c[8];
-  bool jump = false;  // signed stencil whose sign changes cannot all be surfaces
-  if ((i0.array() >= 0).all() && (i0.array() + 1 < dims_.array()).all()) {
-    // All eight centres inside.
-    std::uint16_t code[8];
-    if ((i0.x() & kBlockMask) != kBlockMask && (i0.y() & kBlockMask) != kBlockMask &&
-        (i0.z() & kBlockMask) != kBlockMask) {
+  const float ux = (p_map.x() - origin_m_.x()) * inv_resolution_ - 0.5f;
+  const float uy = (p_map.y() - origin_m_.y()) * inv_resolution_ - 0.5f;
+  const float uz = (p_map.z() - origin_m_.z()) * inv_resolution_ - 0.5f;
+  float c[8];  // corner values, c[4 dx + 2 dy + dz] at i0 + (dx, dy, dz)
+  float t[3];  // position within the stencil
+  bool jump;   // signed stencil whose sign changes cannot all be surfaces
+  if (ux >= 0.0f && uy >= 0.0f && uz >= 0.0f && ux < dims_f_.x() - 1.0f && uy < dims_f_.y() - 1.0f &&
+      uz < dims_f_.z() - 1.0f) {
+    // All eight centres inside (and u finite): truncation is the floor.
+    const int ix = static_cast<int>(ux);
+    const int iy = static_cast<int>(uy);
+    const int iz = static_cast<int>(uz);
+    t[0] = ux - static_cast<float>(ix);
+    t[1] = uy - static_cast<float>(iy);
+    t[2] = uz - static_cast<float>(iz);
+    if ((ix & kBlockMask) != kBlockMask && (iy & kBlockMask) != kBlockMask && (iz & kBlockMask) != kBlockMask) {
       // One block: direct loads (a missing block reads the clamp everywhere).
-      const Block* block = BlockAt(i0.x(), i0.y(), i0.z());
+      const Block* block = BlockAt(ix, iy, iz);
       if (block == nullptr) {
         if (gradient_map != nullptr) gradient_map->setZero();
         return clamp_m_;
       }
-      const std::uint16_t* first =
-          block->data() + BlockOffset(i0.x() & kBlockMask, i0.y() & kBlockMask, i0.z() & kBlockMask);
+      const std::uint16_t* first = block->data() + BlockOffset(ix & kBlockMask, iy & kBlockMask, iz & kBlockMask);
       constexpr int kStrideX = kBlockEdge * kBlockEdge;
       constexpr int kStrideY = kBlockEdge;
-      for (int k = 0; k < 8; ++k) code[k] = first[(k >> 2) * kStrideX + ((k >> 1) & 1) * kStrideY + (k & 1)];
+      // Each code converted as it is loaded (no array of codes: its narrow
+      // stores and wide reload stalled the lookup).
+      for (int k = 0; k < 8; ++k) {
+        c[k] =
+            static_cast<float>(first[(k >> 2) * kStrideX + ((k >> 1) & 1) * kStrideY + (k & 1)] >> shift_) * step_m_ -
+            offset_m_;
+      }
+      jump = (first[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
     } else {
-      for (int k = 0; k < 8; ++k) code[k] = Code(i0.x() + (k >> 2), i0.y() + ((k >> 1) & 1), i0.z() + (k & 1));
+      for (int k = 0; k < 8; ++k) {
+        c[k] =
+            static_cast<float>(Code(ix + (k >> 2), iy + ((k >> 1) & 1), iz + (k & 1)) >> shift_) * step_m_ - offset_m_;
+      }
+      jump = (Code(ix, iy, iz) & flag_mask_) != 0;
     }
-    for (int k = 0; k < 8; ++k) c[k] = static_cast<float>(code[k] >> shift_) * step_m_ - offset_m_;
-    jump = (code[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
   } else {
+    const Eigen::Vector3f u(ux, uy, uz);
+    if (!u.allFinite() || (u.array() < -1.0f).any() || (u.array() >= dims_f_.array()).any()) {
+      if (gradient_map != nullptr) gradient_map->setZero();
+      return clamp_m_;
+    }
+    const Eigen::Vector3f base = u.array().floor();
+    const Eigen::Vector3i i0 = base.cast<int>();
+    for (int a = 0; a < 3; ++a) t[a] = u[a] - base[a];
     for (int k = 0; k < 8; ++k) c[k] = CellValue(i0 + Eigen::Vector3i(k >> 2, (k >> 1) & 1, k & 1));
     jump = offset_m_ > 0.0f && JumpAlongAnEdge(c, max_crossing_m_);
   }
@@ -318,22 +334,22 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vect
     for (int dy = 0; dy < 2; ++dy) {
       const float c0 = c[4 * dx + 2 * dy];
       const float c1 = c[4 * dx + 2 * dy + 1];
-      cz[dx][dy] = c0 + t.z() * (c1 - c0);
+      cz[dx][dy] = c0 + t[2] * (c1 - c0);
       dcz[dx][dy] = c1 - c0;
     }
   }
-  const float cy0 = cz[0][0] + t.y() * (cz[0][1] - cz[0][0]);
-  const float cy1 = cz[1][0] + t.y() * (cz[1][1] - cz[1][0]);
-  const float value = cy0 + t.x() * (cy1 - cy0);
+  const float cy0 = cz[0][0] + t[1] * (cz[0][1] - cz[0][0]);
+  const float cy1 = cz[1][0] + t[1] * (cz[1][1] - cz[1][0]);
+  const float value = cy0 + t[0] * (cy1 - cy0);
   // |s|: a negative interpolated value (behind a surface) flips with its gradient.
   const float sign = std::copysign(1.0f, value);
   if (gradient_map != nullptr) {
     const float dy0 = cz[0][1] - cz[0][0];
     const float dy1 = cz[1][1] - cz[1][0];
-    const float dz0 = dcz[0][0] + t.y() * (dcz[0][1] - dcz[0][0]);
-    const float dz1 = dcz[1][0] + t.y() * (dcz[1][1] - dcz[1][0]);
+    const float dz0 = dcz[0][0] + t[1] * (dcz[0][1] - dcz[0][0]);
+    const float dz1 = dcz[1][0] + t[1] * (dcz[1][1] - dcz[1][0]);
     *gradient_map =
-        Eigen::Vector3f(cy1 - cy0, dy0 + t.x() * (dy1 - dy0), dz0 + t.x() * (dz1 - dz0)) * (sign * inv_resolution_);
+        Eigen::Vector3f(cy1 - cy0, dy0 + t[0] * (dy1 - dy0), dz0 + t[0] * (dz1 - dz0)) * (sign * inv_resolution_);
   }
   return std::abs(value);
 }

@@ -183,6 +183,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   const auto waves = std::chrono::steady_clock::now();
   for (Site* site : freed) Refill(site);
   for (Site* site : appeared) Wave(site);
+  Spread();
   for (const std::uint64_t packed : touched) {
     Site& site = *sites_.at(packed);
     if (site.waved) MarkIfChanged(&site, false);
@@ -265,6 +266,7 @@ void SurfaceDistanceLayer::EnableDistances() {
   }
   std::sort(keys.begin(), keys.end());  // a deterministic order
   for (const std::uint64_t packed : keys) Wave(sites_.at(packed));
+  Spread();
   counts_.distance_s += SecondsSince(start);
 }
 
@@ -273,27 +275,22 @@ void SurfaceDistanceLayer::Wave(Site* site) {
   ++counts_.waves;
   site->waved = true;
   site->marked = *site->element;
-  std::vector<std::pair<Eigen::Vector3i, Site*>>& queue = wave_queue_;
-  queue.clear();
-  // Its own voxel first (distance 0 wins over any other owner).
+  // Its own voxel (distance 0 wins over any other owner); Spread() goes on from it.
   WorkBlock* block = BlockAt(site->key, true);
   const std::size_t offset = CellOffset(site->key);
   block->sq_distance[offset] = 0;
   block->owner[offset] = site;
   block->Touch(offset);
   ++counts_.cells_claimed;
-  if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) {
-    site->blocks.push_back(block);
-  }
-  queue.emplace_back(site->key, site);
-  Spread(&queue);
+  Record(site, block);
+  Push(site->key, site, block, 0);
 }
 
 void SurfaceDistanceLayer::Refill(Site* site) {
   if (!site->waved) return;
   site->waved = false;
-  // Release the cells it was nearest to, and seed a wave from every
-  // neighbouring cell nearest to another occupied voxel.
+  // Release the cells it was nearest to, and queue every neighbouring cell
+  // nearest to another occupied voxel for Spread() to go on from.
   std::vector<Eigen::Vector3i> released;
   for (WorkBlock* block : site->blocks) {
     const Eigen::Vector3i first = block->key * kEdge;
@@ -307,96 +304,74 @@ void SurfaceDistanceLayer::Refill(Site* site) {
     }
   }
   site->blocks.clear();
-  std::vector<std::pair<Eigen::Vector3i, Site*>> queue;
   for (const Eigen::Vector3i& cell : released) {
     for (const Eigen::Vector3i& step : kSteps) {
       const Eigen::Vector3i next = cell + step;
       if (!InKeyRange(next)) continue;
-      const WorkBlock* block = BlockAt(next, false);
+      WorkBlock* block = BlockAt(next, false);
       if (block == nullptr) continue;
-      Site* owner = block->owner[CellOffset(next)];
-      if (owner != nullptr) queue.emplace_back(next, owner);
+      const std::size_t offset = CellOffset(next);
+      Site* owner = block->owner[offset];
+      if (owner != nullptr) Push(next, owner, block, block->sq_distance[offset]);
     }
   }
-  Spread(&queue);
 }
 
-void SurfaceDistanceLayer::Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>* queue) {
+void SurfaceDistanceLayer::Record(Site* site, WorkBlock* block) {
+  if (!site->blocks.empty() && site->blocks.back() == block) return;
+  if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) site->blocks.push_back(block);
+}
+
+void SurfaceDistanceLayer::Push(const Eigen::Vector3i& cell, Site* site, WorkBlock* block, int sq) {
+  // Spread() never pushes beyond reach_^2: buckets_ is not resized while it runs.
+  if (buckets_.empty()) buckets_.resize(static_cast<std::size_t>(reach_ * reach_) + 1);
+  buckets_[static_cast<std::size_t>(std::max(sq, next_bucket_))].push_back(WaveFront{cell, site, block});
+}
+
+void SurfaceDistanceLayer::Spread() {
+  // Dijkstra's order over squared distances (a bucket per value): every
+  // queued cell claims its 6 neighbours that are nearer to its owner than to
+  // theirs, nearest first, so a cell is claimed about once, by its final
+  // owner, instead of once per wave that passes it. A queued cell that has
+  // since been claimed by another voxel is skipped (its new owner's entry
+  // goes on from it).
   const int reach_sq = reach_ * reach_;
-  // A wave stays within reach_ <= kEdge cells of its voxel, so within the
-  // 3x3x3 blocks around the voxel's block: those are looked up once per
-  // site (neighbourhood[], filled on first use) instead of once per cell.
-  const bool local = reach_ <= kEdge;
-  std::array<WorkBlock*, 27> neighborhood{};
-  std::uint32_t recorded = 0;  // neighbourhood blocks already in site->blocks
-  const Site* neighborhood_site = nullptr;
-  Eigen::Vector3i site_block = Eigen::Vector3i::Zero();
-  Eigen::Vector3i cached_key = Eigen::Vector3i::Constant(-1);  // the block of the last cell tried (general path)
-  WorkBlock* cached = nullptr;
-  for (std::size_t head = 0; head < queue->size(); ++head) {
-    const auto [cell, site] = (*queue)[head];
-    if (local && site != neighborhood_site) {
-      neighborhood_site = site;
-      site_block = BlockOf(site->key);
-      neighborhood.fill(nullptr);
-      recorded = 0;
-    }
-    Eigen::Vector3i recorded_key = Eigen::Vector3i::Constant(-1);  // the last block added to site->blocks
-    // Inside the key range with a margin of a block: neighbourhood
-    // coordinates need no range checks. Otherwise (the key range's edge,
-    // or reach_ > kEdge) the general path below looks blocks up per cell.
-    if (local && (site_block.array() >= 1).all() && (site_block.array() < (kMaxKey >> kShiftBlock) - 1).all()) {
-      const Eigen::Vector3i base = (site_block.array() - 1) * kEdge;  // lowest voxel of the neighbourhood
+  for (next_bucket_ = 0; static_cast<std::size_t>(next_bucket_) < buckets_.size(); ++next_bucket_) {
+    std::vector<WaveFront>& bucket = buckets_[static_cast<std::size_t>(next_bucket_)];
+    // Indexed: claims may append to this bucket (a neighbour no farther).
+    for (std::size_t head = 0; head < bucket.size(); ++head) {
+      const WaveFront front = bucket[head];
+      if (front.block->owner[CellOffset(front.cell)] != front.site) continue;
+      const Eigen::Vector3i& origin = front.site->key;
       for (const Eigen::Vector3i& step : kSteps) {
-        const Eigen::Vector3i next = cell + step;
-        const int sq = (next - site->key).squaredNorm();
+        const Eigen::Vector3i next = front.cell + step;
+        const int sq = (next - origin).squaredNorm();
         if (sq > reach_sq) continue;
-        const Eigen::Vector3i l = next - base;  // in [0, 3 kEdge)
-        const int slot = ((l.x() >> kShiftBlock) * 3 + (l.y() >> kShiftBlock)) * 3 + (l.z() >> kShiftBlock);
-        WorkBlock*& block = neighborhood[static_cast<std::size_t>(slot)];
-        if (block == nullptr) block = BlockAt(next, true);
-        const auto offset =
-            static_cast<std::size_t>(DistanceField::BlockOffset(l.x() & kMask, l.y() & kMask, l.z() & kMask));
+        // The same block unless the step crosses its face.
+        WorkBlock* block = front.block;
+        if (BlockOf(next) != block->key) {
+          if (!InKeyRange(next)) continue;
+          block = BlockAt(next, true);
+        }
+        const std::size_t offset = CellOffset(next);
         if (!(sq < block->sq_distance[offset])) continue;
         block->sq_distance[offset] = static_cast<std::uint16_t>(sq);
-        block->owner[offset] = site;
+        block->owner[offset] = front.site;
         block->Touch(offset);
         ++counts_.cells_claimed;
-        if ((recorded >> slot & 1u) == 0) {
-          recorded |= 1u << slot;
-          if (std::find(site->blocks.begin(), site->blocks.end(), block) == site->blocks.end()) {
-            site->blocks.push_back(block);
-          }
-        }
-        queue->emplace_back(next, site);
+        Record(front.site, block);
+        Push(next, front.site, block, sq);
       }
-      continue;
     }
-    for (const Eigen::Vector3i& step : kSteps) {
-      const Eigen::Vector3i next = cell + step;
-      if (!InKeyRange(next)) continue;
-      const int sq = (next - site->key).squaredNorm();
-      if (sq > reach_sq) continue;
-      const Eigen::Vector3i block_key = BlockOf(next);
-      if (block_key != cached_key) {
-        cached = BlockAt(next, true);
-        cached_key = block_key;
-      }
-      const std::size_t offset = CellOffset(next);
-      if (!(sq < cached->sq_distance[offset])) continue;
-      cached->sq_distance[offset] = static_cast<std::uint16_t>(sq);
-      cached->owner[offset] = site;
-      cached->Touch(offset);
-      ++counts_.cells_claimed;
-      if (block_key != recorded_key) {
-        recorded_key = block_key;
-        if (std::find(site->blocks.begin(), site->blocks.end(), cached) == site->blocks.end()) {
-          site->blocks.push_back(cached);
-        }
-      }
-      queue->emplace_back(next, site);
+    // A large batch (EnableDistances) frees each bucket once done with it:
+    // only the wave's front is held at once.
+    if (bucket.capacity() > kKeptWaveFronts) {
+      std::vector<WaveFront>().swap(bucket);
+    } else {
+      bucket.clear();
     }
   }
+  next_bucket_ = 0;
 }
 
 void SurfaceDistanceLayer::MarkIfChanged(Site* site, bool always) {

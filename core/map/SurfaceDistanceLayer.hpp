@@ -128,12 +128,25 @@ class SurfaceDistanceLayer {
                          const Eigen::Vector3f& end_voxel_center_map) const;
   // Sets or clears site's bit in the occupancy masks.
   void SetOccupied(Site* site, bool occupied);
-  // Claims cells for site from its voxel outwards (see the class comment).
+  // A cell queued for Spread(): it is nearest to site (so far); block holds it.
+  struct WaveFront {
+    Eigen::Vector3i cell;
+    Site* site;
+    WorkBlock* block;
+  };
+  // Claims site's own voxel and queues it: Spread() claims cells from it
+  // outwards (see the class comment).
   void Wave(Site* site);
-  // Gives the cells of a site that became free to their next nearest occupied voxels.
+  // Releases the cells of a site that became free and queues their
+  // neighbours: Spread() gives them to their next nearest occupied voxels.
   void Refill(Site* site);
-  // Lower wave from queued (cell, site) pairs: claims the neighbours each site is nearer to.
-  void Spread(std::vector<std::pair<Eigen::Vector3i, Site*>>* queue);
+  // Claims, nearest first, the neighbours of queued cells that are nearer
+  // to the queued cell's voxel than to their own, until no claim is left.
+  void Spread();
+  // Queues a cell at squared distance sq (voxels^2) from site's voxel.
+  void Push(const Eigen::Vector3i& cell, Site* site, WorkBlock* block, int sq);
+  // Adds block to the blocks where site is nearest to a cell.
+  static void Record(Site* site, WorkBlock* block);
   void MarkIfChanged(Site* site, bool always);
   void Compute(WorkBlock* block, const Eigen::Vector3i& block_key);
 
@@ -162,7 +175,11 @@ class SurfaceDistanceLayer {
   };
   static constexpr std::size_t kMaskCacheSize = 4096;  // a power of two
   std::vector<MaskCacheEntry> mask_cache_;
-  std::vector<std::pair<Eigen::Vector3i, Site*>> wave_queue_;  // Wave's queue (kept to reuse its memory)
+  // Spread()'s queue: a bucket per squared distance (voxels^2), each kept
+  // between calls to reuse its memory unless it held more than kKeptWaveFronts.
+  static constexpr std::size_t kKeptWaveFronts = 1u << 12;
+  std::vector<std::vector<WaveFront>> buckets_;
+  int next_bucket_ = 0;  // the bucket Spread() works on (pushes go there or later)
   SurfaceDistanceCounts counts_;
 };
 

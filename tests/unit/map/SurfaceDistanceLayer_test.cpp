@@ -1,7 +1,9 @@
 #include "map/SurfaceDistanceLayer.hpp"
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <set>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -37,13 +39,21 @@ std::vector<V3> FloorAndWall(std::uint32_t seed) {
 // The distance from p to the element of the surface voxel whose centre is
 // nearest to p (what the layer's waves find, like DynamicEDT3D); false when
 // two voxel centres are equally near (either may be taken).
+// Only occupied voxels count (VoxelCenters()).
 bool NearestVoxelDistance(const SurfaceDistanceLayer& layer, const V3& p, float* distance) {
+  std::set<std::array<int, 3>> occupied;
+  for (const V3& c : layer.VoxelCenters()) {
+    const Eigen::Vector3i k = (c / 0.1f).array().floor().cast<int>();
+    occupied.insert({k.x(), k.y(), k.z()});
+  }
   float best_sq = 1e9f, second_sq = 1e9f;
   const SurfacePoints::Element* best = nullptr;
   layer.surfaces().ForEach([&](std::uint64_t key, const SurfacePoints::Element& e) {
     const V3 center((static_cast<float>((key >> 32) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
                     (static_cast<float>((key >> 16) & 0xffff) - 32768.0f + 0.5f) * 0.1f,
                     (static_cast<float>(key & 0xffff) - 32768.0f + 0.5f) * 0.1f);
+    const Eigen::Vector3i k = (center / 0.1f).array().floor().cast<int>();
+    if (occupied.count({k.x(), k.y(), k.z()}) == 0) return;
     const float sq = (center - p).squaredNorm();
     if (sq < best_sq) {
       second_sq = best_sq;
@@ -194,6 +204,64 @@ TEST(SurfaceDistanceLayer, RaysThroughASurfaceClearIt) {
   EXPECT_GT(layer.counts().voxels_cleared, 50u);
   const auto after = layer.Export(V3::Zero(), 0.0, 2);
   EXPECT_EQ(after->Distance(V3(1.95f, 0.05f, 1.05f)), static_cast<float>(kClamp));
+}
+
+// A wall cleared by rays to a second wall 0.3 m behind it: the cells the
+// first wall was nearest to go to the second (the refill), as a brute-force
+// search over the occupied voxels finds.
+TEST(SurfaceDistanceLayer, RefilledCellsFindTheNextNearestVoxel) {
+  SurfaceDistanceLayer layer(Options());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+  std::vector<V3> front, back;
+  for (int i = 0; i < 1500; ++i) front.emplace_back(2.02f, u(rng), 1.0f + u(rng));
+  for (int i = 0; i < 3000; ++i) back.emplace_back(2.33f, 1.6f * u(rng), 1.0f + 1.6f * u(rng));
+  const V3 sensor(0.0f, 0.0f, 1.0f);
+  layer.Insert(front, sensor);
+  layer.Insert(back, sensor);
+  for (int scan = 0; scan < 20; ++scan) layer.Insert(back, sensor);
+  ASSERT_GT(layer.counts().voxels_cleared, 50u);
+  const auto field = layer.Export(V3::Zero(), 0.0, 1);
+  int checked = 0;
+  for (int ix = 15; ix < 23; ++ix) {
+    for (int iy = -6; iy < 6; ++iy) {
+      for (int iz = 4; iz < 16; ++iz) {
+        const V3 p((static_cast<float>(ix) + 0.5f) * 0.1f, (static_cast<float>(iy) + 0.5f) * 0.1f,
+                   (static_cast<float>(iz) + 0.5f) * 0.1f);
+        float truth = 0.0f;
+        if (!NearestVoxelDistance(layer, p, &truth) || !(truth < kClamp - 0.05)) continue;
+        EXPECT_NEAR(field->Distance(p), truth, SurfaceDistanceLayer::kMoveTolerance * kResolution + 1e-3)
+            << p.transpose();
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+// Nearest first: a cell is claimed about once, by its final voxel, not once
+// per voxel whose wave passes it. Claims against the cells that end up with
+// an owner (within reach of an occupied voxel centre, counted here by brute
+// force), when all voxels are waved at once.
+TEST(SurfaceDistanceLayer, CellsAreClaimedAboutOnce) {
+  SurfaceDistanceLayer layer(Options(false));
+  layer.Insert(FloorAndWall(5), V3(0.0f, 0.0f, 1.0f));
+  layer.EnableDistances();
+  const int reach = static_cast<int>(std::ceil(kClamp / kResolution)) + 1;
+  std::set<std::array<int, 3>> owned;
+  for (const V3& c : layer.VoxelCenters()) {
+    const Eigen::Vector3i k = (c / 0.1f).array().floor().cast<int>();
+    for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dy = -reach; dy <= reach; ++dy) {
+        for (int dz = -reach; dz <= reach; ++dz) {
+          if (dx * dx + dy * dy + dz * dz <= reach * reach) owned.insert({k.x() + dx, k.y() + dy, k.z() + dz});
+        }
+      }
+    }
+  }
+  const double claims = static_cast<double>(layer.counts().cells_claimed);
+  EXPECT_GE(claims, static_cast<double>(owned.size()));
+  EXPECT_LE(claims, 1.1 * static_cast<double>(owned.size())) << claims << " claims, " << owned.size() << " cells";
 }
 
 }  // namespace
