@@ -57,6 +57,11 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
   Eigen::Vector3i current = origin_keys.array().floor().cast<int>();
   Eigen::Vector3i step;
   Eigen::Vector3d t_max, t_delta;
+  // 1 / direction (0 where the ray is parallel to an axis: never used there).
+  Eigen::Vector3d inverse = Eigen::Vector3d::Zero();
+  for (int a = 0; a < 3; ++a) {
+    if (direction[a] != 0.0) inverse[a] = 1.0 / direction[a];
+  }
   for (int a = 0; a < 3; ++a) {
     step[a] = direction[a] > 0.0 ? 1 : -1;
     if (direction[a] == 0.0) {
@@ -78,7 +83,7 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
     for (int a = 0; a < 3; ++a) {
       if (direction[a] == 0.0) continue;
       const double face = static_cast<double>(low[a] + (step[a] > 0 ? edge : 0));
-      t_exit = std::min(t_exit, (face - origin_keys[a]) / direction[a]);
+      t_exit = std::min(t_exit, (face - origin_keys[a]) * inverse[a]);
     }
     if (t_exit >= 1.0) return Leave::kEnded;
     const double t_next = std::max(t, t_exit);
@@ -88,7 +93,7 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
     current = next;
     for (int a = 0; a < 3; ++a) {
       if (direction[a] != 0.0) {
-        t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin_keys[a]) / direction[a];
+        t_max[a] = (static_cast<double>(current[a] + (step[a] > 0 ? 1 : 0)) - origin_keys[a]) * inverse[a];
       }
     }
     return Leave::kMoved;

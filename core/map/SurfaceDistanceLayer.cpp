@@ -41,6 +41,10 @@ std::size_t CellOffset(const Eigen::Vector3i& key) {
   return static_cast<std::size_t>(DistanceField::BlockOffset(key.x() & kMask, key.y() & kMask, key.z() & kMask));
 }
 
+// Offset steps of a cell within its block along x, y, z (DistanceField::BlockOffset).
+constexpr int kCellStride[3] = {DistanceField::BlockOffset(1, 0, 0), DistanceField::BlockOffset(0, 1, 0),
+                                DistanceField::BlockOffset(0, 0, 1)};
+
 bool InKeyRange(const Eigen::Vector3i& key) { return (key.array() >= 0).all() && (key.array() <= kMaxKey).all(); }
 
 // True when after differs from before enough to recompute the distances to
@@ -341,26 +345,37 @@ void SurfaceDistanceLayer::Spread() {
     // Indexed: claims may append to this bucket (a neighbour no farther).
     for (std::size_t head = 0; head < bucket.size(); ++head) {
       const WaveFront front = bucket[head];
-      if (front.block->owner[CellOffset(front.cell)] != front.site) continue;
-      const Eigen::Vector3i& origin = front.site->key;
-      for (const Eigen::Vector3i& step : kSteps) {
-        const Eigen::Vector3i next = front.cell + step;
-        const int sq = (next - origin).squaredNorm();
-        if (sq > reach_sq) continue;
-        // The same block unless the step crosses its face.
-        WorkBlock* block = front.block;
-        if (BlockOf(next) != block->key) {
-          if (!InKeyRange(next)) continue;
-          block = BlockAt(next, true);
+      const std::size_t here = CellOffset(front.cell);
+      if (front.block->owner[here] != front.site) continue;
+      const Eigen::Vector3i d = front.cell - front.site->key;
+      const int sq_here = d.squaredNorm();
+      // The 6 neighbours in kSteps' order: +x, -x, +y, -y, +z, -z.
+      for (int axis = 0; axis < 3; ++axis) {
+        for (int sign = 1; sign >= -1; sign -= 2) {
+          const int sq = sq_here + 2 * sign * d[axis] + 1;  // |d + sign e_axis|^2
+          if (sq > reach_sq) continue;
+          Eigen::Vector3i next = front.cell;
+          next[axis] += sign;
+          // The same block unless the step crosses its face.
+          WorkBlock* block = front.block;
+          std::size_t offset = 0;
+          const int local = front.cell[axis] & kMask;
+          if (local == (sign > 0 ? kMask : 0)) {
+            if (!InKeyRange(next)) continue;
+            block = BlockAt(next, true);
+            offset = CellOffset(next);
+          } else {
+            offset = static_cast<std::size_t>(static_cast<int>(here) + sign * kCellStride[axis]);
+          }
+          if (!(sq < block->sq_distance[offset])) continue;
+          block->sq_distance[offset] = static_cast<std::uint16_t>(sq);
+          block->owner[offset] = front.site;
+          block->Touch(offset);
+          ++counts_.cells_claimed;
+          // front.block is already among the site's blocks (it owns front.cell there).
+          if (block != front.block) Record(front.site, block);
+          Push(next, front.site, block, sq);
         }
-        const std::size_t offset = CellOffset(next);
-        if (!(sq < block->sq_distance[offset])) continue;
-        block->sq_distance[offset] = static_cast<std::uint16_t>(sq);
-        block->owner[offset] = front.site;
-        block->Touch(offset);
-        ++counts_.cells_claimed;
-        Record(front.site, block);
-        Push(next, front.site, block, sq);
       }
     }
     // A large batch (EnableDistances) frees each bucket once done with it:
