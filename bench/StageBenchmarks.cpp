@@ -1,9 +1,12 @@
 // Stage micro-benchmarks on fixed inputs (StageInputs): deskew, scan
 // downsampling, particle filter match, map update (surface elements,
 // distance waves, field export), and distance lookups. Each case runs on a
-// simulated scenario / payload pair; figures in docs/benchmarks.md.
+// simulated scenario / payload pair; figures in docs/benchmarks.md. Also
+// a candidate distance map the issue asked to compare (a batch exact EDT).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
@@ -115,6 +118,114 @@ void BM_MapEnableDistances(benchmark::State& state) {
   }
 }
 
+// Felzenszwalb & Huttenlocher's exact squared distance transform of a
+// sampled function along one line of n values (f: 0 on a surface voxel,
+// kEmpty elsewhere); d receives it. v, z: scratch of n and n + 1 entries.
+constexpr float kEmpty = 1e20f;
+void DistanceTransform1d(const float* f, int n, std::size_t stride, float* d, int* v, float* z) {
+  int k = 0;
+  v[0] = 0;
+  z[0] = -kEmpty;
+  z[1] = kEmpty;
+  for (int q = 1; q < n; ++q) {
+    const float fq = f[static_cast<std::size_t>(q) * stride];
+    float s = 0.0f;
+    while (true) {
+      const int p = v[k];
+      const float fp = f[static_cast<std::size_t>(p) * stride];
+      s = ((fq + static_cast<float>(q) * static_cast<float>(q)) -
+           (fp + static_cast<float>(p) * static_cast<float>(p))) /
+          (2.0f * static_cast<float>(q - p));
+      if (s > z[k] || k == 0) break;
+      --k;
+    }
+    if (s <= z[k] && k == 0) {
+      v[0] = q;
+      z[0] = -kEmpty;
+      z[1] = kEmpty;
+      continue;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = kEmpty;
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < static_cast<float>(q)) ++k;
+    const float dq = static_cast<float>(q - v[k]);
+    d[static_cast<std::size_t>(q) * stride] = dq * dq + f[static_cast<std::size_t>(v[k]) * stride];
+  }
+}
+
+// The candidate the issue names beside the incremental layer (docs/mapping.md,
+// "Distance map candidates"): the exact squared distance to the nearest
+// occupied voxel centre, by three 1D passes over a dense grid around the
+// occupied voxels of the 10 s map (within the odometry box around the last
+// sensor position, plus the clamp), recomputed whole; as a submap's batch
+// when it becomes the matching one, or per key scan. Items are cells.
+void BM_BatchDistanceTransform(benchmark::State& state) {
+  const StageInputs& in = CaseInputs(state);
+  state.SetLabel(in.name);
+  const auto layer = FullMap(in);
+  const double res = in.options.map.resolution_m;
+  const Eigen::Vector3f sensor = in.key_scans.back().sensor_map;
+  const float half = static_cast<float>(in.options.map.max_range_m);
+  std::vector<Eigen::Vector3i> keys;
+  Eigen::Vector3i low = Eigen::Vector3i::Constant(1 << 30);
+  Eigen::Vector3i high = Eigen::Vector3i::Constant(-(1 << 30));
+  for (const Eigen::Vector3f& c : layer->VoxelCenters()) {
+    if (((c - sensor).cwiseAbs().array() > half).any()) continue;
+    const Eigen::Vector3i k = (c.cast<double>() / res).array().floor().cast<int>();
+    keys.push_back(k);
+    low = low.cwiseMin(k);
+    high = high.cwiseMax(k);
+  }
+  const int margin = static_cast<int>(std::ceil(in.options.map.clamp_distance_m / res)) + 1;
+  low.array() -= margin;
+  high.array() += margin;
+  const Eigen::Vector3i dims = (high - low).array() + 1;
+  const std::size_t nx = static_cast<std::size_t>(dims.x());
+  const std::size_t ny = static_cast<std::size_t>(dims.y());
+  const std::size_t nz = static_cast<std::size_t>(dims.z());
+  std::vector<float> grid(nx * ny * nz);
+  std::vector<float> out(grid.size());
+  const int longest = dims.maxCoeff();
+  std::vector<int> v(static_cast<std::size_t>(longest));
+  std::vector<float> z(static_cast<std::size_t>(longest) + 1);
+  for (auto _ : state) {
+    std::fill(grid.begin(), grid.end(), kEmpty);
+    for (const Eigen::Vector3i& k : keys) {
+      const Eigen::Vector3i l = k - low;
+      grid[(static_cast<std::size_t>(l.x()) * ny + static_cast<std::size_t>(l.y())) * nz +
+           static_cast<std::size_t>(l.z())] = 0.0f;
+    }
+    // Along z (contiguous), then y, then x, each pass reading the previous one's output.
+    for (std::size_t x = 0; x < nx; ++x) {
+      for (std::size_t y = 0; y < ny; ++y) {
+        const std::size_t first = (x * ny + y) * nz;
+        DistanceTransform1d(&grid[first], static_cast<int>(nz), 1, &out[first], v.data(), z.data());
+      }
+    }
+    for (std::size_t x = 0; x < nx; ++x) {
+      for (std::size_t iz = 0; iz < nz; ++iz) {
+        const std::size_t first = x * ny * nz + iz;
+        DistanceTransform1d(&out[first], static_cast<int>(ny), nz, &grid[first], v.data(), z.data());
+      }
+    }
+    for (std::size_t y = 0; y < ny; ++y) {
+      for (std::size_t iz = 0; iz < nz; ++iz) {
+        const std::size_t first = y * nz + iz;
+        DistanceTransform1d(&grid[first], static_cast<int>(nx), ny * nz, &out[first], v.data(), z.data());
+      }
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(grid.size()));
+  state.counters["cells"] = static_cast<double>(grid.size());
+  state.counters["voxels"] = static_cast<double>(keys.size());
+}
+
 // The particle filter (with its refinement) matching each scan at its true
 // pose in the map of all key scans; items are scans.
 void BM_Match(benchmark::State& state) {
@@ -163,6 +274,7 @@ BENCHMARK(BM_Deskew)->Apply(AllCases);
 BENCHMARK(BM_ScanDownsample)->Apply(AllCases);
 BENCHMARK(BM_MapUpdate)->Apply(AllCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MapEnableDistances)->Apply(AllCases)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BatchDistanceTransform)->Apply(AllCases)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Match)->Apply(AllCases)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TrilinearLookup)->Apply(AllCases);
 
