@@ -267,6 +267,83 @@ bool DistanceField::Contains(const Eigen::Vector3f& p_map) const {
 
 Eigen::Vector3f DistanceField::box_max() const { return origin_m_ + dims_f_ * resolution_m_; }
 
+bool DistanceField::InBoxStencil(int ix, int iy, int iz, float* c) const {
+  bool jump = false;  // signed stencil whose sign changes cannot all be surfaces
+  if ((ix & kBlockMask) != kBlockMask && (iy & kBlockMask) != kBlockMask && (iz & kBlockMask) != kBlockMask) {
+    // One block: direct loads (a missing block reads the clamp everywhere).
+    const Block* block = BlockAt(ix, iy, iz);
+    if (block == nullptr) return false;
+    const std::uint16_t* first = block->data() + BlockOffset(ix & kBlockMask, iy & kBlockMask, iz & kBlockMask);
+    constexpr int kStrideX = kBlockEdge * kBlockEdge;
+    constexpr int kStrideY = kBlockEdge;
+    // Each code converted as it is loaded (no array of codes: its narrow
+    // stores and wide reload stalled the lookup).
+    for (int k = 0; k < 8; ++k) {
+      c[k] = static_cast<float>(first[(k >> 2) * kStrideX + ((k >> 1) & 1) * kStrideY + (k & 1)] >> shift_) * step_m_ -
+             offset_m_;
+    }
+    jump = (first[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
+  } else {
+    for (int k = 0; k < 8; ++k) {
+      c[k] = static_cast<float>(Code(ix + (k >> 2), iy + ((k >> 1) & 1), iz + (k & 1)) >> shift_) * step_m_ - offset_m_;
+    }
+    jump = (Code(ix, iy, iz) & flag_mask_) != 0;
+  }
+  // Signed fields interpolate the signed values only where their sign
+  // changes can be surfaces (kMaxCrossingSum); otherwise the magnitudes
+  // (the same for stencils of one sign).
+  if (jump) {
+    for (int k = 0; k < 8; ++k) c[k] = std::abs(c[k]);
+  }
+  return true;
+}
+
+void DistanceField::DistancesTrilinear(const Eigen::Vector3f* points_map, int n, float* out) const {
+  // Consecutive points in one stencil (the particles of one scan point)
+  // reuse its eight values; the arithmetic is DistanceTrilinear's.
+  int last_x = -1, last_y = -1, last_z = -1;
+  bool last_stored = false;
+  float c[8];
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3f& p_map = points_map[i];
+    const float ux = (p_map.x() - origin_m_.x()) * inv_resolution_ - 0.5f;
+    const float uy = (p_map.y() - origin_m_.y()) * inv_resolution_ - 0.5f;
+    const float uz = (p_map.z() - origin_m_.z()) * inv_resolution_ - 0.5f;
+    if (!(ux >= 0.0f && uy >= 0.0f && uz >= 0.0f && ux < dims_f_.x() - 1.0f && uy < dims_f_.y() - 1.0f &&
+          uz < dims_f_.z() - 1.0f)) {
+      out[i] = DistanceTrilinear(p_map, nullptr);
+      continue;
+    }
+    const int ix = static_cast<int>(ux);
+    const int iy = static_cast<int>(uy);
+    const int iz = static_cast<int>(uz);
+    if (ix != last_x || iy != last_y || iz != last_z) {
+      last_stored = InBoxStencil(ix, iy, iz, c);
+      last_x = ix;
+      last_y = iy;
+      last_z = iz;
+    }
+    if (!last_stored) {
+      out[i] = clamp_m_;
+      continue;
+    }
+    const float tx = ux - static_cast<float>(ix);
+    const float ty = uy - static_cast<float>(iy);
+    const float tz = uz - static_cast<float>(iz);
+    float cz[2][2];
+    for (int dx = 0; dx < 2; ++dx) {
+      for (int dy = 0; dy < 2; ++dy) {
+        const float c0 = c[4 * dx + 2 * dy];
+        const float c1 = c[4 * dx + 2 * dy + 1];
+        cz[dx][dy] = c0 + tz * (c1 - c0);
+      }
+    }
+    const float cy0 = cz[0][0] + ty * (cz[0][1] - cz[0][0]);
+    const float cy1 = cz[1][0] + ty * (cz[1][1] - cz[1][0]);
+    out[i] = std::abs(cy0 + tx * (cy1 - cy0));
+  }
+}
+
 float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const {
   // Sample coordinates with voxel centres at integers.
   const float ux = (p_map.x() - origin_m_.x()) * inv_resolution_ - 0.5f;
@@ -274,7 +351,6 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vect
   const float uz = (p_map.z() - origin_m_.z()) * inv_resolution_ - 0.5f;
   float c[8];  // corner values, c[4 dx + 2 dy + dz] at i0 + (dx, dy, dz)
   float t[3];  // position within the stencil
-  bool jump;   // signed stencil whose sign changes cannot all be surfaces
   if (ux >= 0.0f && uy >= 0.0f && uz >= 0.0f && ux < dims_f_.x() - 1.0f && uy < dims_f_.y() - 1.0f &&
       uz < dims_f_.z() - 1.0f) {
     // All eight centres inside (and u finite): truncation is the floor.
@@ -284,30 +360,9 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vect
     t[0] = ux - static_cast<float>(ix);
     t[1] = uy - static_cast<float>(iy);
     t[2] = uz - static_cast<float>(iz);
-    if ((ix & kBlockMask) != kBlockMask && (iy & kBlockMask) != kBlockMask && (iz & kBlockMask) != kBlockMask) {
-      // One block: direct loads (a missing block reads the clamp everywhere).
-      const Block* block = BlockAt(ix, iy, iz);
-      if (block == nullptr) {
-        if (gradient_map != nullptr) gradient_map->setZero();
-        return clamp_m_;
-      }
-      const std::uint16_t* first = block->data() + BlockOffset(ix & kBlockMask, iy & kBlockMask, iz & kBlockMask);
-      constexpr int kStrideX = kBlockEdge * kBlockEdge;
-      constexpr int kStrideY = kBlockEdge;
-      // Each code converted as it is loaded (no array of codes: its narrow
-      // stores and wide reload stalled the lookup).
-      for (int k = 0; k < 8; ++k) {
-        c[k] =
-            static_cast<float>(first[(k >> 2) * kStrideX + ((k >> 1) & 1) * kStrideY + (k & 1)] >> shift_) * step_m_ -
-            offset_m_;
-      }
-      jump = (first[0] & flag_mask_) != 0;  // flagged by FlagJumpingStencils
-    } else {
-      for (int k = 0; k < 8; ++k) {
-        c[k] =
-            static_cast<float>(Code(ix + (k >> 2), iy + ((k >> 1) & 1), iz + (k & 1)) >> shift_) * step_m_ - offset_m_;
-      }
-      jump = (Code(ix, iy, iz) & flag_mask_) != 0;
+    if (!InBoxStencil(ix, iy, iz, c)) {
+      if (gradient_map != nullptr) gradient_map->setZero();
+      return clamp_m_;
     }
   } else {
     const Eigen::Vector3f u(ux, uy, uz);
@@ -319,13 +374,12 @@ float DistanceField::DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vect
     const Eigen::Vector3i i0 = base.cast<int>();
     for (int a = 0; a < 3; ++a) t[a] = u[a] - base[a];
     for (int k = 0; k < 8; ++k) c[k] = CellValue(i0 + Eigen::Vector3i(k >> 2, (k >> 1) & 1, k & 1));
-    jump = offset_m_ > 0.0f && JumpAlongAnEdge(c, max_crossing_m_);
-  }
-  // Signed fields interpolate the signed values only where their sign
-  // changes can be surfaces (kMaxCrossingSum); otherwise the magnitudes
-  // (the same for stencils of one sign).
-  if (jump) {
-    for (float& value : c) value = std::abs(value);
+    // Signed fields interpolate the signed values only where their sign
+    // changes can be surfaces (kMaxCrossingSum); otherwise the magnitudes
+    // (the same for stencils of one sign).
+    if (offset_m_ > 0.0f && JumpAlongAnEdge(c, max_crossing_m_)) {
+      for (float& value : c) value = std::abs(value);
+    }
   }
   // Interpolate along z, then y, then x; derivatives by the product rule.
   float cz[2][2];

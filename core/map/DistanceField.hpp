@@ -107,6 +107,10 @@ class DistanceField {
   // Signed fields interpolate the signed values and return the magnitude
   // (see kMaxCrossingSum), so a surface between two centres reads zero.
   float DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const;
+  // out[i] = DistanceTrilinear(points_map[i], nullptr) for i < n, the same
+  // values; faster when consecutive points share a stencil (the particles
+  // of one scan point).
+  void DistancesTrilinear(const Eigen::Vector3f* points_map, int n, float* out) const;
 
   // Attaches the planes of the cells' nearest surface elements (same grid);
   // call before the field is shared. Throws InputError when the sizes differ.
@@ -170,6 +174,10 @@ class DistanceField {
                ? clamp_code_
                : (*block)[static_cast<std::size_t>(BlockOffset(x & kBlockMask, y & kBlockMask, z & kBlockMask))];
   }
+  // The eight values of the in-box stencil at (ix, iy, iz) (magnitudes where
+  // FlagJumpingStencils flagged it); false when its single block is not
+  // stored (every value the clamp).
+  bool InBoxStencil(int ix, int iy, int iz, float* c) const;
   // Splits dense x-y-z cells into blocks (all-clamp blocks not stored).
   void StoreBlocks(const std::vector<std::uint16_t>& cells);
 

@@ -22,7 +22,7 @@ class FieldDistanceQuery final : public matching::DistanceQuery {
   void Distances(const Eigen::Vector3f* points_map, int n, float* out) const override {
     const map::DistanceField& field = *field_;
     if (trilinear_) {
-      for (int i = 0; i < n; ++i) out[i] = field.DistanceTrilinear(points_map[i], nullptr);
+      field.DistancesTrilinear(points_map, n, out);
     } else {
       for (int i = 0; i < n; ++i) out[i] = field.Distance(points_map[i]);
     }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -247,6 +249,29 @@ TEST(DistanceField, TrilinearAcrossABlockBoundaryUsesBothBlocks) {
   // Inside one block the interpolation of the stored values is as before.
   const V3 q(0.3f, 0.3f, 0.3f);
   EXPECT_NEAR(field.DistanceTrilinear(q, nullptr), 0.01f + 0.02f * q.norm(), 2e-4f);
+}
+
+// The batch lookup is the single lookup, value for value: clusters of
+// points (the particles of one scan point) in and across stencils, blocks,
+// missing blocks, the box's edge and outside it; signed fields with jumping
+// stencils too.
+TEST(DistanceField, BatchTrilinearEqualsSingleLookups) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> box(-0.3f, 1.9f);
+  std::normal_distribution<float> spread(0.0f, 0.04f);
+  std::vector<V3> points;
+  for (int cluster = 0; cluster < 300; ++cluster) {
+    const V3 center(box(rng), box(rng), box(rng));
+    for (int k = 0; k < 20; ++k) points.push_back(center + V3(spread(rng), spread(rng), spread(rng)));
+  }
+  points.push_back(V3(std::nanf(""), 0.5f, 0.5f));
+  for (const DistanceField& field : {TwoBlockField(), SignedField(Jump), SignedField(Crossing), LinearField()}) {
+    std::vector<float> batch(points.size());
+    field.DistancesTrilinear(points.data(), static_cast<int>(points.size()), batch.data());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      ASSERT_EQ(batch[i], field.DistanceTrilinear(points[i], nullptr)) << points[i].transpose();
+    }
+  }
 }
 
 TEST(DistanceField, InconsistentConstructionIsAnInputError) {
