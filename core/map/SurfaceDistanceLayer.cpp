@@ -160,7 +160,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   std::vector<Site*> appeared;
   for (const std::uint64_t packed : touched) {
     const Eigen::Vector3i key = Unpack(packed);
-    surfaces_.Refresh(packed, Center(key));
+    const SurfacePoints::Element* element = surfaces_.Refresh(packed, Center(key));
     auto found = sites_.find(packed);
     if (found == sites_.end()) {
       site_store_.emplace_back();
@@ -168,7 +168,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
     }
     Site& site = *found->second;
     site.key = key;
-    site.element = surfaces_.Find(packed);
+    site.element = element;
     site.log_odds = std::min(site.log_odds + log_odds_hit_, log_odds_max_);
     site.missed_in = scans_;  // a hit wins over the scan's misses (as in OctoMap)
     if (!site.occupied && site.log_odds > 0.0f) {

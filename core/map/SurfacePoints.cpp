@@ -134,22 +134,22 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
   return pooled;
 }
 
-void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map) {
+const SurfacePoints::Element* SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map) {
   Entry* found = Lookup(key);
-  if (found == nullptr) return;
+  if (found == nullptr) return nullptr;
   Entry& entry = *found;
   entry.element.mean_m = voxel_center_map + entry.sum / entry.weight;
   const float refit_after = entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
   const bool refit = !entry.has_element || entry.adds_since_fit >= refit_after;
   entry.has_element = true;
-  if (!refit) return;
+  if (!refit) return &entry.element;
   entry.adds_since_fit = 0.0f;
   Element& element = entry.element;
   element.planar = false;
   element.oriented = false;
   element.normal.setZero();
   const Entry pooled = PooledMoments(key);
-  if (pooled.weight < kMinPlaneWeight) return;
+  if (pooled.weight < kMinPlaneWeight) return &entry.element;
   // Scatter about the pooled mean: E[d d^T] - mean mean^T.
   const Eigen::Vector3f mean = pooled.sum / pooled.weight;
   const Eigen::Matrix<float, 6, 1> m = pooled.sum_sq / pooled.weight;
@@ -157,6 +157,7 @@ void SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_cent
   scatter << m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5];
   scatter -= mean * mean.transpose();
   FitPlane(scatter, pooled.sum_view / pooled.weight, kMinSpread * resolution_m_, &element);
+  return &entry.element;
 }
 
 void SurfacePoints::Erase(std::uint64_t key) {

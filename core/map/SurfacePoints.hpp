@@ -79,8 +79,8 @@ class SurfacePoints {
   // and its neighbours' returns) when none was fitted yet or the voxel got
   // kRefitFraction of its weight (a full kMaxWeight once the average is
   // exponential) in new returns since (no-op for unknown keys). Call it
-  // after the Adds of a whole scan.
-  void Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
+  // after the Adds of a whole scan. Returns Find(key) (saves its look-up).
+  const Element* Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
   // Forgets key (its voxel became free).
   void Erase(std::uint64_t key);
   // The element of key (as of its last Refresh), or null when the voxel has
