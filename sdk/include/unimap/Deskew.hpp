@@ -57,7 +57,7 @@ inline double DeskewBlendBoundM(double range_m, double lever_arm_m, double body_
 // window) and blended between them (translation linearly, rotation by the
 // normalised quaternion blend): the queries are called about twice per
 // knot, not per point. Points move from the exact transform by at most
-// DeskewBlendBoundM (3 um at 10 m with 2 rad/s body and mount rates;
+// DeskewBlendBoundM (1.25 um at 10 m with 2 rad/s body and mount rates;
 // docs/design.md 1.1). Validates first (ValidateRawScan); errors from the
 // queries propagate.
 UNIMAP_SDK_API BodyScan DeskewScan(const RawScan& scan, const MountQuery& T_body_lidar_at,
