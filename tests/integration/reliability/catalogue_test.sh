@@ -293,7 +293,10 @@ cli)
   case_ max_duration_ok "run --max-duration-s 2 on 3 s of data: maps the first 2 s" 0 "scans 80 \(matched [1-9][0-9]*\), data 2 s" $(r) --out "$work/o6" --max-duration-s 2
   ;;
 signals)
-  base_dataset 12
+  # Long enough that a run is still mapping well after its first progress
+  # line (a second in): the 12 s this used to be were mapped in 0.9 s once
+  # the mapper ran at 13x real time, and the signal came after the exit.
+  base_dataset 60
   # signal_run ID SIGNAL WHEN CODE: `unimap run` stopped by SIGNAL when the
   # condition WHEN holds (start: the output folder exists; loop: the first
   # progress line, after a second of mapping; final: the trajectory of the
