@@ -16,6 +16,9 @@ struct BlockOccupancy {
   // Bit BlockOffset(x, y, z) set for each occupied voxel; null: none is.
   const std::array<std::uint64_t, DistanceField::kBlockCells / 64>* mask = nullptr;
   std::uint8_t quarters = 0;  // bit QuarterIndex set for each 4^3 quarter holding an occupied voxel
+  // Bit set for each occupied voxel the walk is not to visit (already
+  // settled by an earlier ray); null: every occupied voxel is visited.
+  const std::array<std::uint64_t, DistanceField::kBlockCells / 64>* settled = nullptr;
 };
 
 // Blocks split into 2x2x2 quarters of 4^3 voxels, for rays to cross an
@@ -34,8 +37,8 @@ std::uint8_t QuarterMask(const std::array<std::uint64_t, DistanceField::kBlockCe
 
 // Amanatides & Woo's traversal in voxel-key units (voxel edges at integers)
 // from origin_keys to the centre of voxel `end`, that voxel excluded,
-// calling visit(key) for each occupied voxel it passes (keys in the 16-bit
-// range only). lookup(block_key) -> BlockOccupancy says what a block holds;
+// calling visit(key) for each occupied voxel it passes that is not settled
+// (keys in the 16-bit range only). lookup(block_key) -> BlockOccupancy says what a block holds;
 // blocks and quarters holding no occupied voxel (and not the end) are
 // crossed in one step. visit returns true when it changed the occupancy:
 // the walk then looks its block up again. Only empty space is skipped: a
@@ -87,7 +90,11 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
     }
     if (t_exit >= 1.0) return Leave::kEnded;
     const double t_next = std::max(t, t_exit);
-    const Eigen::Vector3i next = (origin_keys + (t_next + 1e-9) * direction).array().floor().cast<int>();
+    const Eigen::Vector3d position = origin_keys + (t_next + 1e-9) * direction;
+    // floor(): truncation where it is the same (keys are non-negative), a
+    // library call only outside the key range.
+    const Eigen::Vector3i next =
+        position.unaryExpr([](double v) { return v >= 0.0 ? static_cast<int>(v) : static_cast<int>(std::floor(v)); });
     if (((next - low).array() >= 0).all() && ((next - low).array() < edge).all()) return Leave::kStuck;
     t = t_next;
     current = next;
@@ -124,7 +131,9 @@ void WalkRay(const Eigen::Vector3d& origin_keys, const Eigen::Vector3i& end, Loo
       if (left == Leave::kMoved) continue;
       const auto bit = static_cast<std::size_t>(
           DistanceField::BlockOffset(current.x() & (kEdge - 1), current.y() & (kEdge - 1), current.z() & (kEdge - 1)));
-      if (occupancy.mask != nullptr && ((*occupancy.mask)[bit / 64] >> (bit % 64) & 1u) != 0 && visit(current)) {
+      if (occupancy.mask != nullptr && ((*occupancy.mask)[bit / 64] >> (bit % 64) & 1u) != 0 &&
+          (occupancy.settled == nullptr || ((*occupancy.settled)[bit / 64] >> (bit % 64) & 1u) == 0) &&
+          visit(current)) {
         cached_block = Eigen::Vector3i::Constant(-1);
       }
     }

@@ -45,6 +45,11 @@ std::size_t CellOffset(const Eigen::Vector3i& key) {
 constexpr int kCellStride[3] = {DistanceField::BlockOffset(1, 0, 0), DistanceField::BlockOffset(0, 1, 0),
                                 DistanceField::BlockOffset(0, 0, 1)};
 
+template <std::size_t N>
+bool Empty(const std::array<std::uint64_t, N>& mask) {
+  return std::all_of(mask.begin(), mask.end(), [](std::uint64_t word) { return word == 0; });
+}
+
 bool InKeyRange(const Eigen::Vector3i& key) { return (key.array() >= 0).all() && (key.array() <= kMaxKey).all(); }
 
 // True when after differs from before enough to recompute the distances to
@@ -91,6 +96,9 @@ struct SurfaceDistanceLayer::WorkBlock {
   bool dirty = true;                                                  // to recompute at the next export
   std::array<std::uint64_t, DistanceField::kBlockCells / 64> dirty_cells{};  // ... these cells of it
   std::shared_ptr<const DistanceField::Block> exported;                      // as of the last export (null: all clamp)
+  // The blocks across its faces (+x, -x, +y, -y, +z, -z; kSteps' order)
+  // once a wave has crossed there: blocks are never removed.
+  std::array<WorkBlock*, 6> neighbors{};
 
   // Marks a cell for recomputation at the next export.
   void Touch(std::size_t offset) {
@@ -175,6 +183,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
       SetOccupied(&site, true);
       appeared.push_back(&site);
     }
+    if (site.occupied) Settle(site.key);  // rays skip it (a hit this scan)
   }
   std::vector<Site*> freed;
   if (options_.raycast_free_space) {
@@ -201,17 +210,27 @@ void SurfaceDistanceLayer::SetOccupied(Site* site, bool occupied) {
   const std::size_t bit = CellOffset(site->key);
   const std::uint64_t packed_block = SurfacePoints::Pack(BlockOf(site->key));
   if (occupied) {
-    auto& mask = occupied_masks_[packed_block];  // zero-initialised when new
+    auto& mask = occupied_masks_[packed_block].occupied;  // zero-initialised when new
     mask[bit / 64] |= std::uint64_t{1} << (bit % 64);
     return;
   }
+  // An emptied block keeps its (all-zero) entry: erasing moves other
+  // entries of the table, which Carve's cache points to (it erases them after).
   const auto it = occupied_masks_.find(packed_block);
   if (it == occupied_masks_.end()) return;
-  auto& mask = it.value();
-  mask[bit / 64] &= ~(std::uint64_t{1} << (bit % 64));
-  if (std::all_of(mask.begin(), mask.end(), [](std::uint64_t word) { return word == 0; })) {
-    occupied_masks_.erase(it);
+  it.value().occupied[bit / 64] &= ~(std::uint64_t{1} << (bit % 64));
+}
+
+void SurfaceDistanceLayer::Settle(const Eigen::Vector3i& key) {
+  const auto it = occupied_masks_.find(SurfacePoints::Pack(BlockOf(key)));
+  if (it == occupied_masks_.end()) return;
+  BlockMasks& masks = it.value();
+  if (masks.settled_in != scans_) {
+    masks.settled.fill(0);
+    masks.settled_in = scans_;
   }
+  const std::size_t bit = CellOffset(key);
+  masks.settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
 }
 
 void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
@@ -228,31 +247,59 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
     const std::uint64_t packed_block = SurfacePoints::Pack(block);
     MaskCacheEntry& entry = mask_cache_[KeyHash()(packed_block) & (kMaskCacheSize - 1)];
     if (entry.packed_block != packed_block) {
-      const auto it = occupied_masks_.find(packed_block);
+      auto it = occupied_masks_.find(packed_block);
       entry.packed_block = packed_block;
-      entry.occupancy.mask = it == occupied_masks_.end() ? nullptr : &it->second;
-      entry.occupancy.quarters = entry.occupancy.mask == nullptr ? 0 : QuarterMask(*entry.occupancy.mask);
+      entry.masks = it == occupied_masks_.end() ? nullptr : &it.value();
+      entry.occupancy = BlockOccupancy{};
+      if (entry.masks != nullptr && Empty(entry.masks->occupied)) entry.masks = nullptr;  // emptied by this Carve
+      if (entry.masks != nullptr) {
+        if (entry.masks->settled_in != scans_) {  // settled by an earlier scan: nothing is yet
+          entry.masks->settled.fill(0);
+          entry.masks->settled_in = scans_;
+        }
+        entry.occupancy.mask = &entry.masks->occupied;
+        entry.occupancy.quarters = QuarterMask(entry.masks->occupied);
+        entry.occupancy.settled = &entry.masks->settled;
+      }
     }
     return entry.occupancy;
+  };
+  // Marks voxel settled for the rest of the scan (its block was just looked up).
+  const auto settle = [this](const Eigen::Vector3i& voxel) {
+    const std::uint64_t packed_block = SurfacePoints::Pack(BlockOf(voxel));
+    const MaskCacheEntry& entry = mask_cache_[KeyHash()(packed_block) & (kMaskCacheSize - 1)];
+    if (entry.packed_block != packed_block || entry.masks == nullptr) return;
+    const std::size_t bit = CellOffset(voxel);
+    entry.masks->settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
   };
   for (const std::uint64_t packed : endpoints) {
     const Eigen::Vector3i end = Unpack(packed);
     const Eigen::Vector3f end_center = Center(end);
     WalkRay(origin, end, lookup, [&](const Eigen::Vector3i& voxel) {
       Site& site = *sites_.at(SurfacePoints::Pack(voxel));
-      if (site.missed_in == scans_ || !RayCrossesSurface(site, sensor_map, end_center)) return false;
+      if (site.missed_in == scans_) {  // hit or missed by this scan already
+        settle(voxel);
+        return false;
+      }
+      if (!RayCrossesSurface(site, sensor_map, end_center)) return false;
       site.missed_in = scans_;
+      settle(voxel);
       ++counts_.misses;
       site.log_odds = std::max(site.log_odds + log_odds_miss_, log_odds_min_);
       if (site.log_odds > 0.0f) return false;
-      // May erase the block's mask (moving others in the table): every
-      // block is looked up again.
       SetOccupied(&site, false);
-      std::fill(mask_cache_.begin(), mask_cache_.end(), MaskCacheEntry{});
+      // Its block's cached occupancy is stale: the walk looks it up again.
+      const std::uint64_t packed_block = SurfacePoints::Pack(BlockOf(voxel));
+      mask_cache_[KeyHash()(packed_block) & (kMaskCacheSize - 1)] = MaskCacheEntry{};
       ++counts_.voxels_cleared;
       freed->push_back(&site);
       return true;
     });
+  }
+  // Blocks left without an occupied voxel hold none any more.
+  for (const Site* site : *freed) {
+    const auto it = occupied_masks_.find(SurfacePoints::Pack(BlockOf(site->key)));
+    if (it != occupied_masks_.end() && Empty(it->second.occupied)) occupied_masks_.erase(it);
   }
   // A deterministic order for the refills.
   std::sort(freed->begin(), freed->end(),
@@ -362,7 +409,9 @@ void SurfaceDistanceLayer::Spread() {
           const int local = front.cell[axis] & kMask;
           if (local == (sign > 0 ? kMask : 0)) {
             if (!InKeyRange(next)) continue;
-            block = BlockAt(next, true);
+            WorkBlock*& across = front.block->neighbors[static_cast<std::size_t>(2 * axis + (sign > 0 ? 0 : 1))];
+            if (across == nullptr) across = BlockAt(next, true);
+            block = across;
             offset = CellOffset(next);
           } else {
             offset = static_cast<std::size_t>(static_cast<int>(here) + sign * kCellStride[axis]);

@@ -126,7 +126,11 @@ class SurfaceDistanceLayer {
   // end_voxel_center_map passes through site's surface (a miss), not beside it.
   bool RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
                          const Eigen::Vector3f& end_voxel_center_map) const;
-  // Sets or clears site's bit in the occupancy masks.
+  // Marks the occupied voxel key as hit or missed by the current scan in
+  // its block's masks (BlockMasks::settled): Carve's rays skip it.
+  void Settle(const Eigen::Vector3i& key);
+  // Sets or clears site's bit in the occupancy masks (a block's entry stays
+  // when its last bit is cleared: Carve erases emptied entries when done).
   void SetOccupied(Site* site, bool occupied);
   // A cell queued for Spread(): it is nearest to site (so far); block holds it.
   struct WaveFront {
@@ -165,13 +169,23 @@ class SurfaceDistanceLayer {
   std::size_t occupied_ = 0;                                                   // sites occupied now
   Eigen::Vector3i block_min_ = Eigen::Vector3i::Constant(1 << 20);             // extent of blocks_
   Eigen::Vector3i block_max_ = Eigen::Vector3i::Constant(-(1 << 20));
-  // Per block holding an occupied voxel: which of its voxels are.
-  tsl::robin_map<std::uint64_t, std::array<std::uint64_t, DistanceField::kBlockCells / 64>, KeyHash> occupied_masks_;
+  using VoxelMask = std::array<std::uint64_t, DistanceField::kBlockCells / 64>;
+  // Per block holding an occupied voxel: which of its voxels are, and which
+  // of those the scan being carved has hit or missed already (their
+  // Site::missed_in is the scan's), so that later rays skip them without
+  // looking their sites up (most rays of a scan cross the same voxels).
+  struct BlockMasks {
+    VoxelMask occupied{};
+    VoxelMask settled{};           // valid when settled_in == scans_
+    std::uint64_t settled_in = 0;  // the scan settled refers to
+  };
+  tsl::robin_map<std::uint64_t, BlockMasks, KeyHash> occupied_masks_;
   std::uint64_t scans_ = 0;  // scans inserted (stamps Site::missed_in)
   // Carve's cache of occupied_masks_ look-ups (valid during one Carve).
   struct MaskCacheEntry {
     std::uint64_t packed_block = ~std::uint64_t{0};  // the block (none)
     BlockOccupancy occupancy;                        // what it holds
+    BlockMasks* masks = nullptr;                     // its entry of occupied_masks_ (null: none)
   };
   static constexpr std::size_t kMaskCacheSize = 4096;  // a power of two
   std::vector<MaskCacheEntry> mask_cache_;

@@ -65,21 +65,24 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
 
 void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
                         const Eigen::Vector3f* sensor_map) {
-  Entry* found = Lookup(key);
-  if (found == nullptr) {
-    std::uint32_t slot = 0;
-    if (free_.empty()) {
-      slot = static_cast<std::uint32_t>(store_.size());
-      store_.emplace_back();
+  if (key != last_key_) {
+    const auto it = index_.find(key);
+    if (it != index_.end()) {
+      last_slot_ = it->second;
     } else {
-      slot = free_.back();
-      free_.pop_back();
-      store_[slot] = Entry{};
+      if (free_.empty()) {
+        last_slot_ = static_cast<std::uint32_t>(store_.size());
+        store_.emplace_back();
+      } else {
+        last_slot_ = free_.back();
+        free_.pop_back();
+        store_[last_slot_] = Entry{};
+      }
+      index_.emplace(key, last_slot_);
     }
-    index_.emplace(key, slot);
-    found = &store_[slot];
+    last_key_ = key;
   }
-  Entry& entry = *found;
+  Entry& entry = store_[last_slot_];
   if (entry.weight >= kMaxWeight) {
     // Exponential average: the moments keep the weight of kMaxWeight returns.
     const float keep = (kMaxWeight - 1.0f) / kMaxWeight;
@@ -166,6 +169,7 @@ void SurfacePoints::Erase(std::uint64_t key) {
   free_.push_back(it->second);
   store_[it->second] = Entry{};
   index_.erase(it);
+  if (key == last_key_) last_key_ = ~std::uint64_t{0};
 }
 
 SurfacePoints::Entry* SurfacePoints::Lookup(std::uint64_t key) {

@@ -138,6 +138,10 @@ class SurfacePoints {
   tsl::robin_map<std::uint64_t, std::uint32_t, KeyHash> index_;
   std::deque<Entry> store_;
   std::vector<std::uint32_t> free_;  // store_ slots of erased entries
+  // Add's last key and its slot: consecutive returns of a scan often share
+  // a voxel, which then costs no hash look-up.
+  std::uint64_t last_key_ = ~std::uint64_t{0};
+  std::uint32_t last_slot_ = 0;
 };
 
 }  // namespace unimap::map

@@ -3,12 +3,34 @@
 #include <iostream>
 
 #include <CLI/CLI.hpp>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "CommandLine.hpp"
 #include "Commands.hpp"
 #include "unimap/Version.hpp"
 
+namespace {
+
+// Keeps freed memory in the process for reuse instead of returning it to
+// the system: a mapper frees and reallocates megabytes per sweep (deskewed
+// points, downsampling tables, map blocks), and glibc's defaults give them
+// back and fault them in again each time (docs/mapping.md, "Allocator").
+// Process-wide, so the command line sets it; the library does not.
+void KeepFreedMemory() {
+#if defined(__GLIBC__)
+  constexpr int kTrimThresholdBytes = 64 << 20;  // free memory kept at the top of a heap before it is returned
+  constexpr int kMmapThresholdBytes = 32 << 20;  // larger blocks are mapped (and unmapped) on their own
+  mallopt(M_TRIM_THRESHOLD, kTrimThresholdBytes);
+  mallopt(M_MMAP_THRESHOLD, kMmapThresholdBytes);
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  KeepFreedMemory();
   CLI::App app{"unimap: real-time 3D mapping from any LiDAR payload (fixed 3D, rotating 3D, rotating 2D)"};
   app.set_version_flag("--version", std::string("unimap ") + unimap::kSdkVersion);
   app.require_subcommand(1);

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <random>
+#include <set>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +80,61 @@ void ExpectSameVisits(int occupied, int min_visits) {
 TEST(RayWalk, SkippingEmptySpaceVisitsTheSameVoxelsAsAVoxelByVoxelWalk) {
   ExpectSameVisits(3000, 500);
   ExpectSameVisits(20000, 2000);
+}
+
+// Settled voxels (BlockOccupancy::settled) are left out of a walk and
+// nothing else is: the walk visits what an unsettled walk visits minus them.
+TEST(RayWalk, SettledVoxelsAreNotVisited) {
+  std::vector<Eigen::Vector3i> voxels;
+  const std::map<std::uint64_t, Mask> masks = RandomOccupancy(5, 20000, &voxels);
+  std::map<std::uint64_t, Mask> settled;
+  std::set<std::uint64_t> settled_voxels;
+  for (std::size_t i = 0; i < voxels.size(); i += 2) {  // every other voxel settled
+    const Eigen::Vector3i& v = voxels[i];
+    const auto bit = static_cast<std::size_t>(DistanceField::BlockOffset(v.x() & 7, v.y() & 7, v.z() & 7));
+    settled[PackBlock(v.unaryExpr([](int c) { return c >> DistanceField::kBlockShift; }))][bit / 64] |= std::uint64_t{1}
+                                                                                                        << (bit % 64);
+    settled_voxels.insert(PackBlock(v));
+  }
+  const auto lookup = [&](const Eigen::Vector3i& block, bool with_settled) {
+    BlockOccupancy out;
+    const auto it = masks.find(PackBlock(block));
+    if (it != masks.end()) {
+      out.mask = &it->second;
+      out.quarters = QuarterMask(it->second);
+      const auto s = settled.find(PackBlock(block));
+      if (with_settled && s != settled.end()) out.settled = &s->second;
+    }
+    return out;
+  };
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> origin_coordinate(990.0, 1010.0);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(voxels.size()) - 1);
+  int left_out = 0;
+  for (int ray = 0; ray < 2000; ++ray) {
+    const Eigen::Vector3d origin(origin_coordinate(rng), origin_coordinate(rng), origin_coordinate(rng));
+    const Eigen::Vector3i end = voxels[static_cast<std::size_t>(pick(rng))];
+    std::vector<Eigen::Vector3i> all, unsettled;
+    WalkRay(
+        origin, end, [&](const Eigen::Vector3i& b) { return lookup(b, false); },
+        [&](const Eigen::Vector3i& v) {
+          all.push_back(v);
+          return false;
+        });
+    WalkRay(
+        origin, end, [&](const Eigen::Vector3i& b) { return lookup(b, true); },
+        [&](const Eigen::Vector3i& v) {
+          unsettled.push_back(v);
+          return false;
+        });
+    std::vector<Eigen::Vector3i> expected;
+    for (const Eigen::Vector3i& v : all) {
+      if (settled_voxels.count(PackBlock(v)) == 0) expected.push_back(v);
+    }
+    left_out += static_cast<int>(all.size() - expected.size());
+    ASSERT_EQ(unsettled, expected) << "ray " << ray;
+  }
+  EXPECT_GT(left_out, 1000);  // settled voxels were on the rays
 }
 
 TEST(RayWalk, QuarterMaskMarksTheQuartersHoldingAVoxel) {

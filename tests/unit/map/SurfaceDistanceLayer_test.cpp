@@ -206,6 +206,29 @@ TEST(SurfaceDistanceLayer, RaysThroughASurfaceClearIt) {
   EXPECT_EQ(after->Distance(V3(1.95f, 0.05f, 1.05f)), static_cast<float>(kClamp));
 }
 
+// Many rays of one scan cross the same voxel: it is missed once per scan
+// (OctoMap's discretised insertion), and not at all by a scan that also hits
+// it (the hit wins).
+TEST(SurfaceDistanceLayer, AVoxelIsMissedOncePerScanAndNotWhereTheScanHits) {
+  SurfaceDistanceLayer layer(Options(false));
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(-0.5f, 0.5f);
+  std::vector<V3> wall, behind;
+  for (int i = 0; i < 1500; ++i) wall.emplace_back(2.02f, u(rng), 1.0f + u(rng));
+  for (int i = 0; i < 1500; ++i) behind.emplace_back(4.02f, 2.0f * u(rng), 1.0f + 2.0f * u(rng));
+  const V3 sensor(0.0f, 0.0f, 1.0f);
+  for (int scan = 0; scan < 3; ++scan) layer.Insert(wall, sensor);
+  const std::size_t wall_voxels = layer.counts().occupied;
+  ASSERT_GE(wall_voxels, 100u);
+  std::vector<V3> both = wall;
+  both.insert(both.end(), behind.begin(), behind.end());
+  layer.Insert(both, sensor);  // hits every wall voxel, rays through them
+  EXPECT_EQ(layer.counts().misses, 0u);
+  layer.Insert(behind, sensor);  // 1500 rays through about 100 voxels
+  EXPECT_GT(layer.counts().misses, 50u);
+  EXPECT_LE(layer.counts().misses, wall_voxels);
+}
+
 // A wall cleared by rays to a second wall 0.3 m behind it: the cells the
 // first wall was nearest to go to the second (the refill), as a brute-force
 // search over the occupied voxels finds.
