@@ -149,8 +149,9 @@ SurfaceDistanceLayer::WorkBlock* SurfaceDistanceLayer::BlockAt(const Eigen::Vect
 void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map, const Eigen::Vector3f& sensor_map) {
   const auto start = std::chrono::steady_clock::now();
   ++scans_;
-  std::vector<std::uint64_t> touched;
-  touched.reserve(points_map.size());
+  // The voxels the returns fell in, with their surface slots.
+  std::vector<std::pair<std::uint64_t, SurfacePoints::Slot>> hit;
+  hit.reserve(points_map.size());
   for (const Eigen::Vector3f& p : points_map) {
     Eigen::Vector3i key;
     if (!p.allFinite() || !KeyOf(p, &key)) {
@@ -158,23 +159,27 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
       continue;
     }
     const std::uint64_t packed = SurfacePoints::Pack(key);
-    surfaces_.Add(packed, Center(key), p, &sensor_map);
-    touched.push_back(packed);
+    hit.emplace_back(packed, surfaces_.Add(packed, Center(key), p, &sensor_map));
     ++counts_.points_added;
   }
-  std::sort(touched.begin(), touched.end());  // a deterministic order
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  std::sort(hit.begin(), hit.end());  // a deterministic order (a key has one slot)
+  hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+  std::vector<std::uint64_t> touched(hit.size());
+  std::vector<Site*> touched_sites(hit.size());
   // Hits: one per voxel and scan (as OctoMap counts a discretised scan).
   std::vector<Site*> appeared;
-  for (const std::uint64_t packed : touched) {
+  for (std::size_t i = 0; i < hit.size(); ++i) {
+    const std::uint64_t packed = hit[i].first;
+    touched[i] = packed;
     const Eigen::Vector3i key = Unpack(packed);
-    const SurfacePoints::Element* element = surfaces_.Refresh(packed, Center(key));
+    const SurfacePoints::Element* element = surfaces_.Refresh(hit[i].second, packed, Center(key));
     auto found = sites_.find(packed);
     if (found == sites_.end()) {
       site_store_.emplace_back();
       found = sites_.emplace(packed, &site_store_.back()).first;
     }
     Site& site = *found->second;
+    touched_sites[i] = &site;
     site.key = key;
     site.element = element;
     site.log_odds = std::min(site.log_odds + log_odds_hit_, log_odds_max_);
@@ -197,9 +202,8 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   for (Site* site : freed) Refill(site);
   for (Site* site : appeared) Wave(site);
   Spread();
-  for (const std::uint64_t packed : touched) {
-    Site& site = *sites_.at(packed);
-    if (site.waved) MarkIfChanged(&site, false);
+  for (Site* site : touched_sites) {
+    if (site->waved) MarkIfChanged(site, false);
   }
   counts_.distance_s += SecondsSince(waves);
 }
@@ -376,7 +380,8 @@ void SurfaceDistanceLayer::Record(Site* site, WorkBlock* block) {
 void SurfaceDistanceLayer::Push(const Eigen::Vector3i& cell, Site* site, WorkBlock* block, int sq) {
   // Spread() never pushes beyond reach_^2: buckets_ is not resized while it runs.
   if (buckets_.empty()) buckets_.resize(static_cast<std::size_t>(reach_ * reach_) + 1);
-  buckets_[static_cast<std::size_t>(std::max(sq, next_bucket_))].push_back(WaveFront{cell, site, block});
+  buckets_[static_cast<std::size_t>(std::max(sq, next_bucket_))].push_back(
+      WaveFront{cell, static_cast<std::uint16_t>(sq), site, block});
 }
 
 void SurfaceDistanceLayer::Spread() {
@@ -393,9 +398,15 @@ void SurfaceDistanceLayer::Spread() {
     for (std::size_t head = 0; head < bucket.size(); ++head) {
       const WaveFront front = bucket[head];
       const std::size_t here = CellOffset(front.cell);
-      if (front.block->owner[here] != front.site) continue;
+      // Skipped when claimed by another voxel since it was queued, or
+      // released by a refill (front.site became free, before this Spread):
+      // a cell's squared distance only falls during a Spread (a voxel claims
+      // a cell only nearer than its owner, and a voxel's distance to a cell
+      // is fixed), so a cell still owned has front.sq exactly, and one
+      // released went with a site no longer waved.
+      if (front.block->sq_distance[here] != front.sq || !front.site->waved) continue;
       const Eigen::Vector3i d = front.cell - front.site->key;
-      const int sq_here = d.squaredNorm();
+      const int sq_here = front.sq;
       // The 6 neighbours in kSteps' order: +x, -x, +y, -y, +z, -z.
       for (int axis = 0; axis < 3; ++axis) {
         for (int sign = 1; sign >= -1; sign -= 2) {

@@ -135,6 +135,7 @@ class SurfaceDistanceLayer {
   // A cell queued for Spread(): it is nearest to site (so far); block holds it.
   struct WaveFront {
     Eigen::Vector3i cell;
+    std::uint16_t sq;  // its squared distance from site's voxel (voxels^2)
     Site* site;
     WorkBlock* block;
   };

@@ -63,8 +63,8 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
       patch_radius_m_(patch_radius_voxels * resolution_m_),
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 
-void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
-                        const Eigen::Vector3f* sensor_map) {
+SurfacePoints::Slot SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map,
+                                       const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map) {
   if (key != last_key_) {
     const auto it = index_.find(key);
     if (it != index_.end()) {
@@ -103,6 +103,7 @@ void SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_m
     const float length = view.norm();
     if (length > 0.0f) entry.sum_view += view / length;
   }
+  return last_slot_;
 }
 
 SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
@@ -139,7 +140,16 @@ SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
 
 const SurfacePoints::Element* SurfacePoints::Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map) {
   Entry* found = Lookup(key);
-  if (found == nullptr) return nullptr;
+  return found == nullptr ? nullptr : RefreshEntry(found, key, voxel_center_map);
+}
+
+const SurfacePoints::Element* SurfacePoints::Refresh(Slot slot, std::uint64_t key,
+                                                     const Eigen::Vector3f& voxel_center_map) {
+  return RefreshEntry(&store_[slot], key, voxel_center_map);
+}
+
+const SurfacePoints::Element* SurfacePoints::RefreshEntry(Entry* found, std::uint64_t key,
+                                                          const Eigen::Vector3f& voxel_center_map) {
   Entry& entry = *found;
   entry.element.mean_m = voxel_center_map + entry.sum / entry.weight;
   const float refit_after = entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;

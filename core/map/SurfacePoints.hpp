@@ -70,10 +70,12 @@ class SurfacePoints {
            static_cast<std::uint64_t>(key.z() & 0xffff);
   }
 
+  // Where a voxel's entry is kept: valid until its key is erased.
+  using Slot = std::uint32_t;
   // Adds the return p_map to the voxel key whose centre is voxel_center_map.
   // sensor_map (null when unknown, e.g. prior point clouds) orients the plane.
-  // The voxel's element changes only on Refresh.
-  void Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
+  // The voxel's element changes only on Refresh. Returns the voxel's slot.
+  Slot Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
            const Eigen::Vector3f* sensor_map);
   // Updates the element of key: its mean always; its plane (fitted to its
   // and its neighbours' returns) when none was fitted yet or the voxel got
@@ -81,6 +83,8 @@ class SurfacePoints {
   // exponential) in new returns since (no-op for unknown keys). Call it
   // after the Adds of a whole scan. Returns Find(key) (saves its look-up).
   const Element* Refresh(std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
+  // Refresh of key, whose slot Add returned since key was last erased (no look-up).
+  const Element* Refresh(Slot slot, std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
   // Forgets key (its voxel became free).
   void Erase(std::uint64_t key);
   // The element of key (as of its last Refresh), or null when the voxel has
@@ -142,6 +146,9 @@ class SurfacePoints {
   // a voxel, which then costs no hash look-up.
   std::uint64_t last_key_ = ~std::uint64_t{0};
   std::uint32_t last_slot_ = 0;
+
+  // Refresh of the entry of key.
+  const Element* RefreshEntry(Entry* entry, std::uint64_t key, const Eigen::Vector3f& voxel_center_map);
 };
 
 }  // namespace unimap::map
