@@ -16,7 +16,7 @@ namespace {
 // Keeps freed memory in the process for reuse instead of returning it to
 // the system: a mapper frees and reallocates megabytes per sweep (deskewed
 // points, downsampling tables, map blocks), and glibc's defaults give them
-// back and fault them in again each time (docs/mapping.md, "Allocator").
+// back and fault them in again each time (docs/mapping.md, "Third round").
 // Process-wide, so the command line sets it; the library does not.
 void KeepFreedMemory() {
 #if defined(__GLIBC__)
