@@ -7,8 +7,9 @@
 #                                  unit_eval) and the fuzz regression replays (not fuzz.bt, which needs the
 #                                  map library): the targets that build in a few minutes
 #   scripts/sanitize.sh tsan       TSan build of the threaded tests (map thread, background optimiser,
-#                                  particle-filter threads, mapper): unit_map, unit_graph, unit_matching,
-#                                  unit_pipeline
+#                                  particle-filter threads, mapper, a recording converted as it is read):
+#                                  unit_map, unit_graph, unit_matching, unit_pipeline, unit_io's
+#                                  LiveConversionTest
 #   scripts/sanitize.sh all        asan then tsan (the default)
 # Any sanitizer report fails the test that caused it (halt_on_error; UBSan does not recover).
 # Build folders: ASAN_DIR (build-asan), TSAN_DIR (build-tsan).
@@ -47,12 +48,12 @@ tsan() {
   # (set before the build: gtest_discover_tests runs the test binaries)
   export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/scripts/sanitizer-suppressions/tsan.txt"
   cmake --build "$TSAN_DIR" -j2 --target unimap_payload_rotating_2d unimap_payload_fixed_3d \
-    unimap_payload_rotating_3d unit_map unit_graph unit_matching unit_pipeline
+    unimap_payload_rotating_3d unit_map unit_graph unit_matching unit_pipeline unit_io
   # Left out: the one test that runs the particle filter on several oneTBB threads. Debian's libtbb is
   # not instrumented, so TSan cannot see the hand-over of a split range to a worker and reports races
   # inside TBB's own parallel_for / partitioner headers (docs/reliability.md); suppressing those
   # frames would also hide races in the loop bodies they run.
-  ctest --test-dir "$TSAN_DIR" --output-on-failure -j2 -R '^unit_(map|graph|matching|pipeline)\.' \
+  ctest --test-dir "$TSAN_DIR" --output-on-failure -j2 -R '^unit_(map|graph|matching|pipeline)\.|^unit_io\.LiveConversionTest\.' \
     -E 'GaussianParticleFilter\.DeterministicForASeedAndThreadCount'
 }
 

@@ -47,7 +47,7 @@ ConversionReport WriteBagDataset(const ConversionOptions& options, const std::st
   metadata.source = source;
   metadata.payload = options.payload.empty() ? DefaultPayload(selected) : options.payload;
   report.payload = metadata.payload;
-  ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
+  ReorderingDatasetWriter writer(OpenDatasetSink(options, metadata), options.reorder_window_s, &report);
   bool time_convention_noted = false;
   const auto write = [&](RosbagMessage* message) {
     std::visit(

@@ -21,7 +21,7 @@ ConversionReport ConvertCarmen(const ConversionOptions& options) {
   // A fixed planar laser: the fixed_2d payload (--payload overrides it).
   metadata.payload = options.payload.empty() ? "fixed_2d" : options.payload;
   report.payload = metadata.payload;
-  ReorderingDatasetWriter writer(options.output, metadata, options.reorder_window_s, &report);
+  ReorderingDatasetWriter writer(OpenDatasetSink(options, metadata), options.reorder_window_s, &report);
 
   while (std::optional<CarmenMessage> message = reader.Next()) {
     if (options.stop != nullptr && options.stop->load()) {

@@ -4,12 +4,16 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/BagClockAligner.hpp"
 #include "io/CarmenReader.hpp"
+#include "io/DatasetMetadata.hpp"
+#include "io/DatasetSink.hpp"
 #include "io/KittiReader.hpp"
 #include "io/RosbagReader.hpp"
 
@@ -33,6 +37,9 @@ struct ConversionOptions {
   RosbagReaderOptions rosbag;               // topic choice (ROS 1 and ROS 2 bags), scalar angle unit
   BagClockOptions clocks;                   // bags: topics stamped on different clocks (BagClockAligner)
   const std::atomic<bool>* stop = nullptr;  // when set (e.g. by a signal): stop reading, finish the dataset
+  // Where the items go, given the dataset's metadata (called once, before
+  // the first item); empty: a DatasetWriter of `output`.
+  std::function<std::unique_ptr<DatasetSink>(const DatasetMetadata&)> open_sink;
 };
 
 // What a conversion wrote and left out.
@@ -50,11 +57,18 @@ struct ConversionReport {
                                                // holds what was read before
 };
 
-// Each reads `options.input` and writes `options.output`; throws InputError
-// (bad input, naming file and line / topic) or ConfigError.
+// options.open_sink(metadata), or a DatasetWriter of options.output.
+std::unique_ptr<DatasetSink> OpenDatasetSink(const ConversionOptions& options, const DatasetMetadata& metadata);
+
+// Each reads `options.input` and writes `options.output` (or the sink
+// options.open_sink makes); throws InputError (bad input, naming file and
+// line / topic) or ConfigError.
 ConversionReport ConvertKitti(const ConversionOptions& options);
 ConversionReport ConvertCarmen(const ConversionOptions& options);
 ConversionReport ConvertRosbag(const ConversionOptions& options);   // throws InputError for a ROS 2 bag
 ConversionReport ConvertRos2Bag(const ConversionOptions& options);  // see Ros2BagReader
+// The one of the four `format` names ("kitti", "carmen", "rosbag", "ros2":
+// `unimap convert --format`); InputError for another name.
+ConversionReport Convert(const std::string& format, const ConversionOptions& options);
 
 }  // namespace unimap::io

@@ -3,10 +3,15 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
 #include <system_error>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "io/DatasetLayout.hpp"
+#include "io/LiveConversion.hpp"
+#include "io/LiveStreamCheck.hpp"
 #include "io/NumberLineStream.hpp"
 #include "io/RawInput.hpp"
 #include "io/ScanFileReader.hpp"
@@ -44,6 +49,12 @@ class DatasetReader::Impl {
     if (groundtruth_) groundtruth_->SetTimeLimits(max_s, HUGE_VAL);  // not integrated: gaps are fine
     if (scans_) scans_->SetLimits(limits_);
   }
+
+  Impl(const std::string& format, const ConversionOptions& conversion, const DatasetLimits& limits)
+      : limits_(CheckedLimits(limits)),
+        input_(conversion.input),
+        live_(std::make_unique<LiveConversion>(format, conversion)),
+        metadata_(live_->metadata()) {}
 
   static DatasetLimits CheckedLimits(const DatasetLimits& limits) {
     std::string why;
@@ -83,6 +94,11 @@ class DatasetReader::Impl {
   }
 
   std::optional<ImuSample> ReadImu() {
+    if (live_) {
+      std::optional<ImuSample> sample = live_->NextImu();
+      if (sample) live_imu_.Check(input_, limits_, sample->time_s, limits_.ImuProblem(*sample));
+      return sample;
+    }
     double v[layout::kImuColumns];
     if (!imu_ || !imu_->Next(v)) return std::nullopt;
     ImuSample sample;
@@ -94,6 +110,11 @@ class DatasetReader::Impl {
   }
 
   std::optional<EncoderSample> ReadEncoder() {
+    if (live_) {
+      std::optional<EncoderSample> sample = live_->NextEncoder();
+      if (sample) live_encoder_.Check(input_, limits_, sample->time_s, limits_.EncoderProblem(*sample));
+      return sample;
+    }
     double v[layout::kEncoderColumns];
     if (!encoder_ || !encoder_->Next(v)) return std::nullopt;
     const EncoderSample sample{v[0], v[1]};
@@ -102,6 +123,14 @@ class DatasetReader::Impl {
   }
 
   std::optional<OdometrySample> ReadOdometry() {
+    if (live_) {
+      std::optional<OdometrySample> sample = live_->NextOdometry();
+      if (sample) {
+        live_odometry_.Check(input_, limits_, sample->time_s,
+                             limits_.PositionProblem(sample->T_odom_body.translation()));
+      }
+      return sample;
+    }
     double v[kTumColumns];
     if (!odometry_ || !odometry_->Next(v)) return std::nullopt;
     OdometrySample sample;
@@ -111,9 +140,17 @@ class DatasetReader::Impl {
     return sample;
   }
 
-  std::optional<ScanRecord> ReadScan() { return scans_ ? scans_->Next() : std::nullopt; }
+  std::optional<ScanRecord> ReadScan() {
+    if (live_) {
+      std::optional<ScanRecord> scan = live_->NextScan();
+      if (scan) live_scans_.Check(input_, limits_, ScanEndTime(*scan), limits_.ScanProblem(*scan));
+      return scan;
+    }
+    return scans_ ? scans_->Next() : std::nullopt;
+  }
 
   std::optional<StampedPose> ReadGroundTruth() {
+    if (live_) return live_->NextGroundTruth();
     double v[kTumColumns];
     if (!groundtruth_ || !groundtruth_->Next(v)) return std::nullopt;
     StampedPose pose;
@@ -130,9 +167,26 @@ class DatasetReader::Impl {
     return (this->*read)();
   }
 
+  // The merge; a recording read directly drops (and counts) an event
+  // earlier than one already delivered.
+  std::optional<DatasetEvent> NextEvent() {
+    while (true) {
+      std::optional<DatasetEvent> event = NextMerged();
+      if (!event || !live_) return event;
+      const double time_s = EventTime(*event);
+      if (delivered_any_ && time_s < last_delivered_s_) {
+        ++late_events_;
+        continue;
+      }
+      delivered_any_ = true;
+      last_delivered_s_ = time_s;
+      return event;
+    }
+  }
+
   // k-way merge: one look-ahead per stream, the earliest is returned; ties
   // go to the stream listed first (IMU, encoder, odometry, scans).
-  std::optional<DatasetEvent> NextEvent() {
+  std::optional<DatasetEvent> NextMerged() {
     if (!imu_ahead_) imu_ahead_ = ReadImu();
     if (!encoder_ahead_) encoder_ahead_ = ReadEncoder();
     if (!odometry_ahead_) odometry_ahead_ = ReadOdometry();
@@ -161,6 +215,8 @@ class DatasetReader::Impl {
   }
 
   DatasetLimits limits_;                           // plausibility limits of every item read
+  std::filesystem::path input_;                    // a recording read directly
+  std::unique_ptr<LiveConversion> live_;           // its conversion, else null
   DatasetMetadata metadata_;                       // metadata.yaml
   std::unique_ptr<NumberLineStream> imu_;          // imu.csv, if present
   std::unique_ptr<NumberLineStream> encoder_;      // encoder.csv, if present
@@ -172,16 +228,42 @@ class DatasetReader::Impl {
   std::optional<EncoderSample> encoder_ahead_;
   std::optional<OdometrySample> odometry_ahead_;
   std::optional<ScanRecord> scan_ahead_;
+  // A recording read directly: the checks per stream, and the merge's order.
+  LiveStreamCheck live_imu_{"imu", limits_.max_imu_step_s};
+  LiveStreamCheck live_encoder_{"encoder", limits_.max_encoder_step_s};
+  LiveStreamCheck live_odometry_{"odometry", limits_.max_odometry_step_s};
+  LiveStreamCheck live_scans_{"scans", limits_.max_scan_step_s};
+  bool delivered_any_ = false;
+  double last_delivered_s_ = 0.0;
+  std::size_t late_events_ = 0;
 };
+
+double EventTime(const DatasetEvent& event) {
+  return std::visit(
+      [](const auto& item) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(item)>, ScanRecord>) {
+          return ScanEndTime(item);
+        } else {
+          return item.time_s;
+        }
+      },
+      event);
+}
 
 DatasetReader::DatasetReader(const std::filesystem::path& folder, const DatasetLimits& limits)
     : impl_(std::make_unique<Impl>(folder, limits)) {}
+
+DatasetReader::DatasetReader(const std::string& format, const ConversionOptions& conversion,
+                             const DatasetLimits& limits)
+    : impl_(std::make_unique<Impl>(format, conversion, limits)) {}
 
 DatasetReader::~DatasetReader() = default;
 
 const DatasetMetadata& DatasetReader::metadata() const { return impl_->metadata_; }
 
-bool DatasetReader::has_groundtruth() const { return impl_->groundtruth_ != nullptr; }
+bool DatasetReader::has_groundtruth() const {
+  return impl_->live_ ? impl_->live_->has_groundtruth() : impl_->groundtruth_ != nullptr;
+}
 
 bool DatasetReader::has_imu() {
   if (!impl_->imu_ahead_) impl_->imu_ahead_ = impl_->ReadImu();
@@ -218,5 +300,11 @@ std::optional<ScanRecord> DatasetReader::NextScan() { return impl_->Take(&impl_-
 std::optional<StampedPose> DatasetReader::NextGroundTruth() { return impl_->ReadGroundTruth(); }
 
 std::optional<DatasetEvent> DatasetReader::NextEvent() { return impl_->NextEvent(); }
+
+std::optional<ConversionReport> DatasetReader::conversion_report() const {
+  return impl_->live_ ? impl_->live_->report() : std::nullopt;
+}
+
+std::size_t DatasetReader::late_events() const { return impl_->late_events_; }
 
 }  // namespace unimap::io

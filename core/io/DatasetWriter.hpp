@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "io/DatasetMetadata.hpp"
+#include "io/DatasetSink.hpp"
 #include "io/ScanRecord.hpp"
 #include "unimap/EncoderSample.hpp"
 #include "unimap/ImuSample.hpp"
@@ -20,32 +21,32 @@ namespace unimap::io {
 // Destroying the writer without Finish() (an error, a full disk) removes the
 // ".partial" files it was writing and leaves no metadata.yaml, which readers
 // report as an incomplete dataset.
-class DatasetWriter {
+class DatasetWriter final : public DatasetSink {
  public:
   // Creates the folder if needed; throws InputError if it cannot. An existing
   // metadata.yaml in it is removed at once (the folder is being rewritten).
   DatasetWriter(const std::filesystem::path& folder, DatasetMetadata metadata);
-  ~DatasetWriter();
+  ~DatasetWriter() override;
   DatasetWriter(const DatasetWriter&) = delete;
   DatasetWriter& operator=(const DatasetWriter&) = delete;
 
   // Each throws InputError for a non-finite time, time before the stream's
   // previous item, a write after Finish() or a failed write.
-  void WriteImu(const ImuSample& sample);
-  void WriteEncoder(const EncoderSample& sample);
+  void WriteImu(const ImuSample& sample) override;
+  void WriteEncoder(const EncoderSample& sample) override;
   // Also throws when T_odom_body is not finite or its linear part is not a rotation.
-  void WriteOdometry(const OdometrySample& sample);
+  void WriteOdometry(const OdometrySample& sample) override;
   // Ordered by ScanEndTime(). Also throws for a scan the format cannot hold
   // (non-finite times, RawScan ending before it starts, intensities neither
   // empty nor one per beam).
-  void WriteScan(const ScanRecord& scan);
+  void WriteScan(const ScanRecord& scan) override;
   // Also throws when T_map_body is not finite or its linear part is not a rotation.
-  void WriteGroundTruth(const StampedPose& pose);
+  void WriteGroundTruth(const StampedPose& pose) override;
   // Flushes, renames every stream into place, removes stream files an older
   // dataset left in the folder, then writes metadata.yaml (format_version 1,
   // duration_s = latest minus earliest time of any stream). Further writes
   // and a second Finish() are InputErrors.
-  void Finish();
+  void Finish() override;
 
  private:
   class Impl;

@@ -1,6 +1,5 @@
 // ConvertKitti (io/DatasetConversion.hpp): a KITTI odometry sequence into a dataset.
 #include "io/DatasetConversion.hpp"
-#include "io/DatasetWriter.hpp"
 
 namespace unimap::io {
 
@@ -24,7 +23,13 @@ ConversionReport ConvertKitti(const ConversionOptions& options) {
     for (int c = 0; c < 4; ++c) metadata.camera_from_lidar.push_back(Tr(r, c));
   }
   report.payload = metadata.payload;
-  DatasetWriter writer(options.output, metadata);
+  const std::unique_ptr<DatasetSink> writer = OpenDatasetSink(options, metadata);
+  // Ground truth first, for every frame of the sequence: a run reading the
+  // sequence directly (LiveConversion) has it even when it stops early.
+  for (std::size_t i = 0; i < reader.lidar_poses().size() && i < reader.size(); ++i) {
+    writer->WriteGroundTruth(reader.lidar_poses()[i]);
+    ++report.groundtruth;
+  }
   // Frames are in file order and times.txt is checked non-decreasing: no reordering needed.
   for (std::size_t i = 0; i < reader.size(); ++i) {
     if (options.stop != nullptr && options.stop->load()) {
@@ -33,15 +38,10 @@ ConversionReport ConvertKitti(const ConversionOptions& options) {
     }
     KittiFrame frame = reader.Read(i);
     report.dropped_points += frame.dropped_points;
-    writer.WriteScan(std::move(frame.scan));
+    writer->WriteScan(std::move(frame.scan));
     ++report.scans;
   }
-  // The poses of the frames converted.
-  for (std::size_t i = 0; i < reader.lidar_poses().size() && i < report.scans; ++i) {
-    writer.WriteGroundTruth(reader.lidar_poses()[i]);
-    ++report.groundtruth;
-  }
-  writer.Finish();
+  writer->Finish();
   return report;
 }
 

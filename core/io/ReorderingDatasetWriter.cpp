@@ -12,9 +12,9 @@ std::string LateReason(const char* stream) {
 
 }  // namespace
 
-ReorderingDatasetWriter::ReorderingDatasetWriter(const std::filesystem::path& folder, DatasetMetadata metadata,
-                                                 double window_s, ConversionReport* report)
-    : writer_(folder, std::move(metadata)),
+ReorderingDatasetWriter::ReorderingDatasetWriter(std::unique_ptr<DatasetSink> sink, double window_s,
+                                                 ConversionReport* report)
+    : writer_(std::move(sink)),
       report_(report),
       imu_(window_s),
       encoder_(window_s),
@@ -56,27 +56,27 @@ void ReorderingDatasetWriter::WriteGroundTruth(const StampedPose& pose) {
 
 void ReorderingDatasetWriter::Drain(bool flush) {
   while (auto sample = imu_.Pop(flush)) {
-    writer_.WriteImu(*sample);
+    writer_->WriteImu(*sample);
     Extend(&imu_span_, sample->time_s);
     ++report_->imu;
   }
   while (auto sample = encoder_.Pop(flush)) {
-    writer_.WriteEncoder(*sample);
+    writer_->WriteEncoder(*sample);
     Extend(&encoder_span_, sample->time_s);
     ++report_->encoder;
   }
   while (auto sample = odometry_.Pop(flush)) {
-    writer_.WriteOdometry(*sample);
+    writer_->WriteOdometry(*sample);
     Extend(&odometry_span_, sample->time_s);
     ++report_->odometry;
   }
   while (auto scan = scans_.Pop(flush)) {
-    writer_.WriteScan(*scan);
+    writer_->WriteScan(*scan);
     Extend(&scan_span_, ScanEndTime(*scan));
     ++report_->scans;
   }
   while (auto pose = groundtruth_.Pop(flush)) {
-    writer_.WriteGroundTruth(*pose);
+    writer_->WriteGroundTruth(*pose);
     Extend(&groundtruth_span_, pose->time_s);
     ++report_->groundtruth;
   }
@@ -84,7 +84,7 @@ void ReorderingDatasetWriter::Drain(bool flush) {
 
 void ReorderingDatasetWriter::Finish() {
   Drain(true);
-  writer_.Finish();
+  writer_->Finish();
   // Streams on different clocks (e.g. a simulator's clock and wall time in
   // one bag) cannot be fused; say so rather than let the mapper find out.
   const Span* spans[] = {&imu_span_, &encoder_span_, &odometry_span_, &scan_span_, &groundtruth_span_};

@@ -2,12 +2,12 @@
 // Internal to unimap_io: a DatasetWriter that puts slightly out-of-order
 // streams back in time order (used by the real-data conversions).
 #include <cstddef>
-#include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/DatasetConversion.hpp"
-#include "io/DatasetWriter.hpp"
+#include "io/DatasetSink.hpp"
 #include "io/TimeReorderBuffer.hpp"
 
 namespace unimap::io {
@@ -18,16 +18,16 @@ namespace unimap::io {
 // window"). Written items are counted in the report too.
 class ReorderingDatasetWriter {
  public:
-  // Opens the dataset folder (DatasetWriter); the report must outlive this object.
-  ReorderingDatasetWriter(const std::filesystem::path& folder, DatasetMetadata metadata, double window_s,
-                          ConversionReport* report);
+  // Writes into sink (a dataset folder or a live run: OpenDatasetSink); the
+  // report must outlive this object.
+  ReorderingDatasetWriter(std::unique_ptr<DatasetSink> sink, double window_s, ConversionReport* report);
 
   void WriteImu(const ImuSample& sample);
   void WriteEncoder(const EncoderSample& sample);
   void WriteOdometry(const OdometrySample& sample);
   void WriteScan(ScanRecord scan);
   void WriteGroundTruth(const StampedPose& pose);
-  // Releases every held item, then DatasetWriter::Finish(). Adds a note when
+  // Releases every held item, then DatasetSink::Finish(). Adds a note when
   // the written streams' time spans do not overlap (sensors on different clocks).
   void Finish();
 
@@ -43,7 +43,7 @@ class ReorderingDatasetWriter {
   void Drain(bool flush);
   static void Extend(Span* span, double time_s);
 
-  DatasetWriter writer_;
+  std::unique_ptr<DatasetSink> writer_;
   ConversionReport* report_;
   TimeReorderBuffer<ImuSample> imu_;
   TimeReorderBuffer<EncoderSample> encoder_;

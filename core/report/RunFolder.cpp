@@ -82,7 +82,8 @@ RunFolder ResolveRunFolder(const ReportOptions& options) {
   }
   const std::string dataset = StringAt(f.run, nullptr, "dataset");
   const fs::path dataset_truth = dataset.empty() ? fs::path() : fs::path(dataset) / "groundtruth.tum";
-  f.truth_file = Pick(options.truth_file, "truth", {dataset_truth});
+  // A run of a recording read directly keeps its ground truth in the folder.
+  f.truth_file = Pick(options.truth_file, "truth", {dataset_truth, f.folder / "groundtruth.tum"});
   fs::path prior_map = StringAt(f.run, "localize", "map");
   if (!IsMapExtension(prior_map)) prior_map.clear();
   f.map_file = Pick(options.map_file, "map", {f.folder / "map.ply", f.folder / "map.pcd", prior_map});

@@ -17,6 +17,7 @@
 #include "MapEvaluation.hpp"
 #include "NumberChecks.hpp"
 #include "OutputFolder.hpp"
+#include "RecordingOptions.hpp"
 #include "RunOutputs.hpp"
 #include "SignalGuard.hpp"
 #include "io/DatasetReader.hpp"
@@ -35,7 +36,8 @@ namespace {
 struct LocalizeCliOptions {
   std::string map_file;           // prior map: .bt (OctoMap) or .pcd (points)
   std::string platform_file;      // platform YAML
-  std::string data_dir;           // dataset folder
+  std::string data_dir;           // dataset folder, or a recording read directly
+  RecordingOptions recording;     // how to read a recording given as data_dir
   std::string out_dir;            // output folder
   std::string initial_pose;       // "x y z qx qy qz qw" (T_map_body), empty: from the truth or identity
   std::string initial_attitude;   // "pose" or "gravity"; empty: pose for a ground-truth start, else gravity
@@ -99,9 +101,10 @@ std::string PoseText(const Eigen::Isometry3d& T) {
   return out.str();
 }
 
-InitialPose ChooseInitialPose(const LocalizeCliOptions& options, const io::DatasetReader& reader) {
+InitialPose ChooseInitialPose(const LocalizeCliOptions& options, const OpenedData& data) {
   if (!options.initial_pose.empty()) return {ParsePose(options.initial_pose), "option"};
-  if (reader.has_groundtruth()) {
+  // (A recording read directly: its ground truth is not read ahead of its scans.)
+  if (data.recording_format.empty() && data.reader->has_groundtruth()) {
     const auto truth = io::ReadTumTrajectory(std::filesystem::path(options.data_dir) / "groundtruth.tum");
     if (!truth.empty()) return {truth.front().T_map_body, "groundtruth"};
   }
@@ -167,9 +170,10 @@ int RunLocalize(const LocalizeCliOptions& options) {
       // (.bt maps keep the default clamp: their resolution is the file's.)
       localizer_options.ClampFieldAtLikelihood();
     }
-    io::DatasetReader reader(options.data_dir);
+    OpenedData data = OpenData(options.data_dir, options.recording);
+    io::DatasetReader& reader = *data.reader;
     CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);
-    const InitialPose initial = ChooseInitialPose(options, reader);
+    const InitialPose initial = ChooseInitialPose(options, data);
     const std::string attitude = !options.initial_attitude.empty() ? options.initial_attitude
                                  : initial.source == "groundtruth" ? "pose"
                                                                    : "gravity";
@@ -203,10 +207,16 @@ int RunLocalize(const LocalizeCliOptions& options) {
     const pipeline::RunSummary summary =
         RunSinkToFolder(reader, localizer, out, "trajectory.tum", options.max_duration_s, options.quiet);
 
+    Json recording = Json::object();
+    const std::filesystem::path recording_truth = FinishRecording(data, out, &recording);
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, localizer.stats(), reader.has_groundtruth());
     outputs.world_frame_errors = true;
+    if (!data.recording_format.empty()) {
+      outputs.truth_file = recording_truth;
+      outputs.extras.emplace_back("recording", recording);
+    }
     Json extra = Json::object();
     extra["map"] = options.map_file;
     extra["map_points"] = map_points;
@@ -236,9 +246,13 @@ void AddLocalizeCommand(CLI::App* app) {
   cmd->add_option("--map", options->map_file, "Prior map: OctoMap .bt or point cloud .pcd (map frame)")->required();
   cmd->add_option("--platform", options->platform_file, "Platform YAML")->required()->check(CLI::ExistingFile);
   cmd->add_option("--data", options->data_dir,
-                  "Dataset folder (docs/dataset-format.md); a raw recording gets the convert command to use")
+                  "Dataset folder (docs/dataset-format.md), or a recording read directly (as `unimap run`)")
       ->required()
       ->check(CLI::ExistingPath);
+  cmd->add_option("--format", options->recording.format,
+                  "The --data recording's format (default: detected; convert's --format)")
+      ->check(CLI::IsMember({"kitti", "carmen", "rosbag", "ros2"}));
+  AddRecordingOptions(cmd, &options->recording);
   cmd->add_option("--out", options->out_dir, "Output folder")->required();
   cmd->add_option("--initial-pose", options->initial_pose,
                   "T_map_body at the end of the static start, \"x y z qx qy qz qw\" "

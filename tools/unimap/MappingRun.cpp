@@ -38,7 +38,12 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     if (options.plane_matching) mapper_options.localizer.UsePlaneMatching();
     if (options.no_line_gap_fill) mapper_options.localizer.line_gap_fill.reset();
     if (options.measure_all_line_points) mapper_options.localizer.max_predicted_distance_m = 0.0;
-    io::DatasetReader reader(options.data_dir);
+    OpenedData data = OpenData(options.data_dir, options.recording);
+    io::DatasetReader& reader = *data.reader;
+    if (!data.recording_format.empty()) {
+      std::cout << "data: " << options.data_dir << " read directly as " << data.recording_format
+                << " (converted as it is read, payload " << reader.metadata().payload << ")\n";
+    }
     const MotionChoice motion = ChooseMotion(options.motion, reader);
     mapper_options.localizer.motion.source = motion.source;
     std::cout << "motion: " << motion.name << " (" << motion.reason << ")\n";
@@ -65,10 +70,16 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       mapping = WriteMapOutputs(out, mapper, map_options);
     }
 
+    Json recording = Json::object();
+    const std::filesystem::path recording_truth = FinishRecording(data, out, &recording);
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
     outputs.odometry_file = kOdometryFile;
+    if (!data.recording_format.empty()) {
+      outputs.truth_file = recording_truth;
+      outputs.extras.emplace_back("recording", recording);
+    }
     outputs.gpf_seed = options.seed;
     outputs.map_file = "map.ply";  // (read without PCL)
     outputs.motion = motion.name;
@@ -76,8 +87,8 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     outputs.extras.emplace_back("mapping", mapping);
     outputs.extras.emplace_back("stages", StageTimesJson(stages, summary.processing_s, !options.quiet));
     const pipeline::MapperStats stats = mapper.stats();
-    if (reader.has_groundtruth() && stats.first_loop_closure_time_s >= 0.0) {
-      const std::filesystem::path truth = std::filesystem::path(options.data_dir) / "groundtruth.tum";
+    if (outputs.has_groundtruth && stats.first_loop_closure_time_s >= 0.0) {
+      const std::filesystem::path truth = outputs.TruthFile();
       const std::optional<LoopPointErrors> loop_point =
           ComputeLoopPointErrors(io::ReadTumTrajectory(out / kOdometryFile), mapper.OptimizedTrajectory(),
                                  io::ReadTumTrajectory(truth), stats.first_loop_closure_time_s);

@@ -4,11 +4,14 @@
 #include <cstdint>
 #include <string>
 
+#include "RecordingOptions.hpp"
+
 namespace unimap::cli {
 
 struct MappingRunOptions {
   std::string platform_file;             // platform YAML
-  std::string data_dir;                  // dataset folder
+  std::string data_dir;                  // dataset folder, or a recording read directly
+  RecordingOptions recording;            // how to read a recording given as data_dir
   std::string out_dir;                   // output folder
   double max_duration_s = 0.0;           // 0: the whole dataset
   int threads = 1;                       // GPF threads

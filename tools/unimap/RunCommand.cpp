@@ -6,6 +6,7 @@
 #include "Commands.hpp"
 #include "MappingRun.hpp"
 #include "NumberChecks.hpp"
+#include "RecordingOptions.hpp"
 #include "SignalGuard.hpp"
 
 namespace unimap::cli {
@@ -15,7 +16,9 @@ void AddRunCommand(CLI::App* app) {
   CLI::App* cmd = app->add_subcommand("run", "Map a dataset with a platform (trajectory, map, evaluation)");
   cmd->add_option("--platform", options->platform_file, "Platform YAML")->required()->check(CLI::ExistingFile);
   cmd->add_option("--data", options->data_dir,
-                  "Dataset folder (docs/dataset-format.md); a raw recording gets the convert command to use")
+                  "Dataset folder (docs/dataset-format.md), or a recording read directly: a KITTI sequence or "
+                  "folder of .bin/.pcd sweeps, a ROS 1 bag, a ROS 2 bag (folder or .db3), a CARMEN log; the "
+                  "recording options are convert's")
       ->required()
       ->check(CLI::ExistingPath);
   cmd->add_option("--out", options->out_dir, "Output folder")->required();
@@ -47,6 +50,10 @@ void AddRunCommand(CLI::App* app) {
                   "odometry, else constant velocity), imu, odometry (the dataset's odometry.csv) or "
                   "constant-velocity")
       ->check(CLI::IsMember({"auto", "imu", "odometry", "constant-velocity"}));
+  cmd->add_option("--format", options->recording.format,
+                  "The --data recording's format (default: detected; convert's --format)")
+      ->check(CLI::IsMember({"kitti", "carmen", "rosbag", "ros2"}));
+  AddRecordingOptions(cmd, &options->recording);
   cmd->callback([options]() {
     const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
     const int code = SignalGuard::ExitCode(RunMappingToFolder(*options));

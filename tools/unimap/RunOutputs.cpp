@@ -137,7 +137,7 @@ void PrintRunProgress(const pipeline::RunProgress& p) {
 int WriteRunOutputs(const RunOutputsInput& in) {
   const pipeline::RunSummary& summary = in.summary;
   const std::filesystem::path out = in.out_dir;
-  const std::filesystem::path truth_file = std::filesystem::path(in.data_dir) / "groundtruth.tum";
+  const std::filesystem::path truth_file = in.TruthFile();
   const bool evaluate = in.has_groundtruth && summary.poses_written >= 2;
   const std::filesystem::path trajectory = out / in.trajectory_file;
 

@@ -16,17 +16,18 @@ namespace unimap::cli {
 
 // Everything a finished run reports.
 struct RunOutputsInput {
-  std::filesystem::path out_dir;   // holds trajectory.tum (written by the run); gets run.json etc.
-  std::string platform_file;       // run.json "platform"
-  std::string payload;             // run.json "payload" (plugin name)
-  std::string data_dir;            // run.json "dataset"; its groundtruth.tum is the truth
-  std::size_t gpf_threads = 1;     // run.json "gpf_threads"
-  std::uint64_t gpf_seed = 1;      // run.json "gpf_seed"
-  std::string motion;              // run.json "motion": the prediction used (empty: not reported)
-  std::string motion_reason;       // run.json "motion_reason": why
-  pipeline::RunSummary summary;    // what the run did and how fast
-  pipeline::LocalizerStats stats;  // the localiser's counts (run.json "localizer")
-  bool has_groundtruth = false;    // the dataset has groundtruth.tum
+  std::filesystem::path out_dir;     // holds trajectory.tum (written by the run); gets run.json etc.
+  std::string platform_file;         // run.json "platform"
+  std::string payload;               // run.json "payload" (plugin name)
+  std::string data_dir;              // run.json "dataset"; its groundtruth.tum is the truth
+  std::size_t gpf_threads = 1;       // run.json "gpf_threads"
+  std::uint64_t gpf_seed = 1;        // run.json "gpf_seed"
+  std::string motion;                // run.json "motion": the prediction used (empty: not reported)
+  std::string motion_reason;         // run.json "motion_reason": why
+  pipeline::RunSummary summary;      // what the run did and how fast
+  pipeline::LocalizerStats stats;    // the localiser's counts (run.json "localizer")
+  bool has_groundtruth = false;      // the dataset has groundtruth.tum (or truth_file)
+  std::filesystem::path truth_file;  // the truth when not data_dir/groundtruth.tum (a recording read directly)
   // Estimate and truth share one frame (localisation in a prior map whose
   // frame is the truth's): run.json also gets the unaligned errors
   // position_rmse_m, rotation_rmse_deg, position_max_error_m,
@@ -36,6 +37,11 @@ struct RunOutputsInput {
   std::string map_file;       // when not empty (in out_dir) and the dataset has world.yaml: map error
   std::string odometry_file;  // when not empty (in out_dir): also evaluated, summary in run.json "odometry"
   std::vector<std::pair<std::string, Json>> extras;  // command-specific objects for run.json (key, object)
+
+  // truth_file, or data_dir/groundtruth.tum.
+  std::filesystem::path TruthFile() const {
+    return truth_file.empty() ? std::filesystem::path(data_dir) / "groundtruth.tum" : truth_file;
+  }
 };
 
 // Unaligned errors of an estimate against the truth in the same frame.
