@@ -64,8 +64,7 @@ class LiveConversion::Sink final : public DatasetSink {
   LiveConversion* owner_;
 };
 
-LiveConversion::LiveConversion(std::string format, ConversionOptions options, QueueLimits limits)
-    : limits_(limits) {
+LiveConversion::LiveConversion(std::string format, ConversionOptions options, QueueLimits limits) : limits_(limits) {
   options.stop = &stop_;
   options.open_sink = [this](const DatasetMetadata& metadata) -> std::unique_ptr<DatasetSink> {
     const std::lock_guard<std::mutex> lock(mutex_);

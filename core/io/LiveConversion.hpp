@@ -26,9 +26,9 @@ class LiveConversion {
  public:
   // How much the queues hold before the conversion waits for the reader.
   struct QueueLimits {
-    std::size_t max_items = 100000;          // items of every sensor stream together
-    std::size_t max_scans = 64;              // scans
-    std::size_t max_scan_points = 1000000;   // points (beams) of the scans held (~8 HDL-64 sweeps)
+    std::size_t max_items = 100000;         // items of every sensor stream together
+    std::size_t max_scans = 64;             // scans
+    std::size_t max_scan_points = 1000000;  // points (beams) of the scans held (~8 HDL-64 sweeps)
   };
 
   // Starts the conversion of options.input as `format` (options.output and

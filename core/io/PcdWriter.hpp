@@ -14,14 +14,16 @@ enum class PcdEncoding {
   kAscii,   // "DATA ascii": one "x y z" line per point, shortest round-trip text (exact)
 };
 
-// Writes points_map (in order) to file atomically: "<file>.partial" is
+// Writes points_map (in order), with intensities (one per point; FIELDS
+// x y z intensity, float32) when given, to file atomically: "<file>.partial" is
 // written and renamed into place (io::WriteWholeFile), so a failed write
 // never leaves a file that looks complete, nor the ".partial". The header is
 //   VERSION 0.7, FIELDS x y z, SIZE 4 4 4, TYPE F F F, COUNT 1 1 1,
 //   WIDTH n, HEIGHT 1, VIEWPOINT 0 0 0 1 0 0 0, POINTS n, DATA binary|ascii.
 // Non-finite points are written as they are (PCD allows NaN). Throws
 // InputError naming the file when it cannot be written.
+// InputError too when intensities are given and not one per point.
 void WritePcdXyz(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map,
-                 PcdEncoding encoding = PcdEncoding::kBinary);
+                 PcdEncoding encoding = PcdEncoding::kBinary, const std::vector<float>* intensities = nullptr);
 
 }  // namespace unimap::io

@@ -9,7 +9,7 @@
 namespace unimap::io {
 namespace {
 
-std::string Header(std::size_t points) {
+std::string Header(std::size_t points, bool intensity) {
   return "ply\n"
          "format binary_little_endian 1.0\n"
          "comment written by unimap\n"
@@ -18,13 +18,18 @@ std::string Header(std::size_t points) {
          "\n"
          "property float x\n"
          "property float y\n"
-         "property float z\n"
-         "end_header\n";
+         "property float z\n" +
+         std::string(intensity ? "property float intensity\n" : "") + "end_header\n";
 }
 
 }  // namespace
 
-void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map) {
+void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map,
+              const std::vector<float>* intensities) {
+  if (intensities != nullptr && intensities->size() != points_map.size()) {
+    throw InputError(file.string() + ": " + std::to_string(intensities->size()) + " intensities for " +
+                     std::to_string(points_map.size()) + " points");
+  }
   // Checked before anything is created, so a rejected cloud leaves no file.
   for (std::size_t i = 0; i < points_map.size(); ++i) {
     if (!points_map[i].allFinite()) {
@@ -32,8 +37,8 @@ void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector
     }
   }
   WriteWholeFile(file, [&](PartialFile& out) {
-    out.Write(Header(points_map.size()));
-    WriteXyzFloat32Le(out, points_map);
+    out.Write(Header(points_map.size(), intensities != nullptr));
+    WriteXyzFloat32Le(out, points_map, intensities);
   });
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Writes point clouds as binary PLY files (the format MeshLab, CloudCompare,
-// Open3D and Blender read): one "vertex" element with float x y z.
+// Open3D and Blender read): one "vertex" element with float x y z (and intensity).
 #include <filesystem>
 #include <vector>
 
@@ -18,12 +18,16 @@ namespace unimap::io {
 //   property float y
 //   property float z
 //   end_header
-// followed by n x 12 bytes: x y z as little-endian IEEE-754 float32.
+// followed by n x 12 bytes: x y z as little-endian IEEE-754 float32. With
+// intensities (one per point) the header also has "property float
+// intensity" after z and each point 16 bytes (InputError when their count
+// is not the points').
 // Non-finite points are rejected, not skipped: a map holding NaN or infinity
 // is a bug upstream, and a silently shorter file would hide it. Throws
 // InputError naming the file (and, for a non-finite point, its index) when
 // the file cannot be written or a point is not finite; no <file> and no
 // "<file>.partial" is left behind then.
-void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map);
+void WritePly(const std::filesystem::path& file, const std::vector<Eigen::Vector3f>& points_map,
+              const std::vector<float>* intensities = nullptr);
 
 }  // namespace unimap::io

@@ -37,6 +37,22 @@ std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>&
   return kept;
 }
 
+std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& points, double voxel_m) {
+  std::vector<std::size_t> kept;
+  if (voxel_m <= 0.0) {
+    kept.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) kept[i] = i;
+    return kept;
+  }
+  const double inv_voxel = 1.0 / voxel_m;
+  VoxelKeySet seen;
+  seen.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (seen.insert(VoxelKey(points[i], inv_voxel)).second) kept.push_back(i);
+  }
+  return kept;
+}
+
 std::vector<Eigen::Vector3f> VoxelCentroids(const std::vector<Eigen::Vector3f>& points, double voxel_m) {
   if (!(voxel_m > 0.0)) return points;
   const double inv_voxel = 1.0 / voxel_m;

@@ -38,6 +38,10 @@ using VoxelKeySet = tsl::robin_set<std::uint64_t, VoxelKeyHash>;
 std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m, int max_points,
                                              std::uint64_t seed);
 
+// The indices of the points VoxelDownsample(points, voxel_m, 0, 0) keeps
+// (the first of each voxel), in order: to keep what goes with them.
+std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& points, double voxel_m);
+
 // One point per voxel: the mean of the points in it, in the order the
 // voxels are first seen (deterministic).
 std::vector<Eigen::Vector3f> VoxelCentroids(const std::vector<Eigen::Vector3f>& points, double voxel_m);

@@ -273,6 +273,13 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::vector<Eigen::Vector3f> points_body;
   points_body.reserve(body.points.size());
   for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
+  // Intensities go with the points into the key scans (and the final map)
+  // when the input has any: a scan of zeros has none to keep.
+  std::vector<float> intensities;
+  if (std::any_of(body.points.begin(), body.points.end(), [](const Point& p) { return p.intensity != 0.0f; })) {
+    intensities.reserve(body.points.size());
+    for (const Point& p : body.points) intensities.push_back(p.intensity);
+  }
 
   // GPF -> pseudo measurement -> ESKF update (docs/design.md 1.3). The state may
   // be a few ms past t_end (waiting for the encoder): the pose error is
@@ -346,18 +353,27 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   if (const auto* line = std::get_if<LineScan>(&scan); line && line_fill_) {
     filled = line_fill_->Add(t_end, sensor_map, map::LineReturns(*line, body, points_map));
   }
-  if (accumulator_.Add(points_map, sensor_map, filled)) {
+  if (accumulator_.Add(points_map, intensities, sensor_map, filled)) {
     Eigen::Vector3f origin;
     // One point per map voxel: the octree update costs per point, occupancy
     // barely changes.
     std::vector<Eigen::Vector3f> scan3d;
+    std::vector<float> scan3d_intensities;
     {
       StageTimer timer(&stats_.times.downsample_s);
-      scan3d = matching::VoxelDownsample(accumulator_.Take(&origin, &filled), options_.map.resolution_m, 0, 0);
+      std::vector<float> all_intensities;
+      const std::vector<Eigen::Vector3f> all = accumulator_.Take(&origin, &all_intensities, &filled);
+      const std::vector<std::size_t> kept = matching::VoxelFirstIndices(all, options_.map.resolution_m);
+      scan3d.reserve(kept.size());
+      for (const std::size_t i : kept) scan3d.push_back(all[i]);
+      if (!all_intensities.empty()) {
+        scan3d_intensities.reserve(kept.size());
+        for (const std::size_t i : kept) scan3d_intensities.push_back(all_intensities[i]);
+      }
     }
     try {
       KeyScan key;
-      if (on_key_scan_) key = {t_ref, T_map_body, scan3d, origin};
+      if (on_key_scan_) key = {t_ref, T_map_body, scan3d, std::move(scan3d_intensities), origin};
       if (!filled.empty()) {
         StageTimer timer(&stats_.times.downsample_s);
         scan3d.insert(scan3d.end(), filled.begin(), filled.end());

@@ -31,6 +31,7 @@ struct KeyScan {
   double time_s = 0.0;                                             // end time of its last scan
   Eigen::Isometry3d T_local_body = Eigen::Isometry3d::Identity();  // body pose then (local frame)
   std::vector<Eigen::Vector3f> points_local;                       // one point per map voxel, local frame
+  std::vector<float> intensities;                                  // one per point, or empty (none in the input)
   Eigen::Vector3f sensor_origin_local = Eigen::Vector3f::Zero();   // mean sensor position of its scans
 };
 

@@ -12,6 +12,18 @@ void LoopClosureFinder::AddRetired(map::RetiredSubmap submap, double path_m) {
   retired_.push_back({std::move(submap), path_m});
 }
 
+std::size_t LoopClosureFinder::retired_points() const {
+  std::size_t n = 0;
+  for (const Retired& r : retired_) n += r.submap.points_submap.size();
+  return n;
+}
+
+std::size_t LoopClosureFinder::retired_bytes() const {
+  std::size_t n = 0;
+  for (const Retired& r : retired_) n += r.submap.points_submap.bytes();
+  return n;
+}
+
 const graph::LoopClosureMatcher& LoopClosureFinder::Matcher(std::size_t index) {
   for (auto it = cache_.begin(); it != cache_.end(); ++it) {
     if (it->first == index) {

@@ -42,6 +42,9 @@ class LoopClosureFinder {
                                   const Eigen::Isometry3d& T_world_body, double path_m, const TrajectoryGraph& graph);
   const LoopSearchStats& stats() const { return stats_; }
   std::size_t retired_count() const { return retired_.size(); }
+  // Surface points the retired submaps keep, and the bytes they take.
+  std::size_t retired_points() const;
+  std::size_t retired_bytes() const;
   // Messages about accepted closures (for the log), since the last call.
   std::vector<std::string> TakeMessages();
 

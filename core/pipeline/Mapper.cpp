@@ -102,14 +102,20 @@ void Mapper::OnKeyScan(KeyScan&& key) {
   // is kept again.
   const double voxel_m = options_.submaps.map.resolution_m;
   std::vector<Eigen::Vector3f> kept;
+  std::vector<float> kept_intensities;
+  const bool intensities = key.intensities.size() == key.points_local.size();
   for (std::size_t i = 0; i < key.points_local.size(); ++i) {
     const Eigen::Vector3f& p = key.points_local[i];
     const Eigen::Vector3i cell((p / static_cast<float>(voxel_m)).array().floor().cast<int>());
-    if (held_voxels_.insert(map::SurfacePoints::Pack(cell)).second) kept.push_back(points_body[i]);
+    if (held_voxels_.insert(map::SurfacePoints::Pack(cell)).second) {
+      kept.push_back(points_body[i]);
+      if (intensities) kept_intensities.push_back(key.intensities[i]);
+    }
   }
   stats_.key_scan_points += points_body.size();
   stats_.map_points_kept += kept.size();
   key_points_body_.push_back(std::move(kept));
+  key_intensities_.push_back(std::move(kept_intensities));
 
   // Every I 3D scans (once a loop closure exists: without one the graph,
   // built from a single trajectory, is already at its optimum).
@@ -147,19 +153,25 @@ std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
   return out;
 }
 
-std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m) const {
+std::vector<Eigen::Vector3f> Mapper::MapPoints(double voxel_m, std::vector<float>* intensities) const {
   // The first point of each voxel_m cell in key-scan order (what
   // matching::VoxelDownsample of every key scan's points gives) without
-  // gathering all of them first.
+  // gathering all of them first. Intensities only when every kept point has one.
+  bool all_intensities = intensities != nullptr;
+  for (std::size_t k = 0; all_intensities && k < key_points_body_.size(); ++k) {
+    all_intensities = key_intensities_[k].size() == key_points_body_[k].size();
+  }
+  if (intensities != nullptr) intensities->clear();
   std::vector<Eigen::Vector3f> points;
   matching::VoxelKeySet seen;
   const double inv_voxel = voxel_m > 0.0 ? 1.0 / voxel_m : 0.0;
   for (std::size_t k = 0; k < key_points_body_.size(); ++k) {
     const Eigen::Isometry3f T_world_body = graph_.T_world_key(static_cast<int>(k)).cast<float>();
-    for (const Eigen::Vector3f& p_body : key_points_body_[k]) {
-      const Eigen::Vector3f p = T_world_body * p_body;
+    for (std::size_t i = 0; i < key_points_body_[k].size(); ++i) {
+      const Eigen::Vector3f p = T_world_body * key_points_body_[k][i];
       if (voxel_m > 0.0 && !seen.insert(matching::VoxelKey(p, inv_voxel)).second) continue;
       points.push_back(p);
+      if (all_intensities) intensities->push_back(key_intensities_[k][i]);
     }
   }
   return points;
@@ -193,6 +205,8 @@ MapperStats Mapper::stats() const {
   s.key_scans = graph_.key_scan_count();
   s.submaps = submaps_->started_count();
   s.retired_submaps = finder_.retired_count();
+  s.retired_points = finder_.retired_points();
+  s.retired_bytes = finder_.retired_bytes();
   s.loop_closures = graph_.loop_closures();
   s.loop_search = finder_.stats();
   return s;

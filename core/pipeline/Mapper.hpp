@@ -26,6 +26,8 @@ struct MapperStats {
   std::size_t key_scans = 0;                // 3D scans (pose-graph scan nodes)
   int submaps = 0;                          // submaps started
   std::size_t retired_submaps = 0;          // submaps retired (kept for loop closure)
+  std::size_t retired_points = 0;           // surface points they keep
+  std::size_t retired_bytes = 0;            // bytes those points take
   std::size_t loop_closures = 0;            // accepted loop-closure constraints
   std::size_t optimizations = 0;            // pose-graph optimisations finished and applied
   std::size_t optimization_failures = 0;    // optimisations that reported !ok (result ignored)
@@ -78,8 +80,9 @@ class Mapper : public EventSink {
   // pose graph (after Finish: the final trajectory).
   std::vector<StampedPose> OptimizedTrajectory() const;
   // Every key scan's points in the world frame (optimised poses), one per
-  // voxel_m voxel.
-  std::vector<Eigen::Vector3f> MapPoints(double voxel_m) const;
+  // voxel_m voxel; with intensities, theirs (one per point when the input
+  // had them, else left empty).
+  std::vector<Eigen::Vector3f> MapPoints(double voxel_m, std::vector<float>* intensities = nullptr) const;
   const Eigen::Isometry3d& T_world_local() const { return graph_.T_world_local(); }
   const LocalizerStats& localizer_stats() const { return localizer_->stats(); }
   // Where the time went: the localiser's and its map's stages, loop search, optimisation.
@@ -108,6 +111,7 @@ class Mapper : public EventSink {
   };
   std::deque<LocalPose> local_poses_;
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
+  std::vector<std::vector<float>> key_intensities_;            // their intensities (empty: none in the input)
   matching::VoxelKeySet held_voxels_;                          // voxels (local frame) key_points_body_ holds
   double path_m_ = 0.0;                                        // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();

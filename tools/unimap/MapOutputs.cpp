@@ -79,9 +79,12 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
     io::WriteKittiTrajectory(out_dir / "trajectory_kitti_camera.txt", camera);
   }
 
-  const std::vector<Eigen::Vector3f> points = mapper.MapPoints(options.map_voxel_m);
-  io::WritePcdXyz(out_dir / "map.pcd", points);
-  io::WritePly(out_dir / "map.ply", points);
+  std::vector<float> intensities;
+  const std::vector<Eigen::Vector3f> points = mapper.MapPoints(options.map_voxel_m, &intensities);
+  // The input's intensities as a field of both files, when it had them.
+  const std::vector<float>* intensity = intensities.empty() ? nullptr : &intensities;
+  io::WritePcdXyz(out_dir / "map.pcd", points, io::PcdEncoding::kBinary, intensity);
+  io::WritePly(out_dir / "map.ply", points, intensity);
   octomap::OcTree tree(options.octree_resolution_m);
   for (const Eigen::Vector3f& p : points) tree.updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);
   map::WriteOctomapBinary(out_dir / "map.bt", tree);
@@ -92,6 +95,8 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["key_scans"] = s.key_scans;
   o["submaps"] = static_cast<std::size_t>(s.submaps);
   o["retired_submaps"] = s.retired_submaps;
+  o["retired_submap_points"] = s.retired_points;
+  o["retired_submap_mib"] = static_cast<double>(s.retired_bytes) / (1024.0 * 1024.0);
   o["loop_closures"] = s.loop_closures;
   o["optimisations"] = s.optimizations;
   o["optimisation_failures"] = s.optimization_failures;
@@ -103,6 +108,7 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["loop_rejected"] = s.loop_search.rejected;
   o["loop_matchers_built"] = s.loop_search.matchers_built;
   o["map_points"] = points.size();
+  o["map_intensity"] = intensity != nullptr;
   o["map_voxel_m"] = options.map_voxel_m;
   o["map_quality"] = MapQualityJson(eval::ComputeMapQuality(points));
   o["messages"] = s.messages;

@@ -43,9 +43,10 @@ void AddRecordingOptions(CLI::App* cmd, RecordingOptions* options) {
                       ->capture_default_str()
                       ->check(CLI::NonNegativeNumber));
   // KITTI
+  added.push_back(cmd->add_option("--poses", c.kitti.poses_file,
+                                  "KITTI: camera-frame poses file (default: found next to the scans)"));
   added.push_back(
-      cmd->add_option("--poses", c.kitti.poses_file, "KITTI: camera-frame poses file (default: found next to the scans)"));
-  added.push_back(cmd->add_option("--times", c.kitti.times_file, "KITTI: times.txt (default: found next to the scans)"));
+      cmd->add_option("--times", c.kitti.times_file, "KITTI: times.txt (default: found next to the scans)"));
   added.push_back(
       cmd->add_option("--calib", c.kitti.calib_file, "KITTI: calib.txt with Tr (default: found, else sequence 00's)"));
   // CARMEN
@@ -72,8 +73,8 @@ void AddRecordingOptions(CLI::App* cmd, RecordingOptions* options) {
       cmd->add_option("--laser-topic", topics.laser,
                       "rosbag, ros2: sensor_msgs/LaserScan topic (default: the only one; 'none'); rosbag: also a "
                       "custom message holding one LaserScan field"));
-  added.push_back(
-      cmd->add_option("--imu-topic", topics.imu, "rosbag, ros2: sensor_msgs/Imu topic (default: the only one; 'none')"));
+  added.push_back(cmd->add_option("--imu-topic", topics.imu,
+                                  "rosbag, ros2: sensor_msgs/Imu topic (default: the only one; 'none')"));
   added.push_back(cmd->add_option("--joint-topic", topics.joint,
                                   "rosbag, ros2: sensor_msgs/JointState motor topic (default: the only one)"));
   added.push_back(cmd->add_option("--joint-name", c.rosbag.joint_name,

@@ -9,8 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "io/DatasetConversion.hpp"
 #include "Json.hpp"
+#include "io/DatasetConversion.hpp"
 #include "io/DatasetReader.hpp"
 
 namespace unimap::cli {

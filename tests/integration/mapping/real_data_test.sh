@@ -42,6 +42,10 @@ case "$case_name" in
       if (ez < 0.85 * tz || ez > 1.15 * tz || (ex - tx)^2 + (ey - ty)^2 > 0.25) {
         print "camera-frame pose 15 (" ex ", " ey ", " ez ") vs truth (" tx ", " ty ", " tz ")"; exit 1 } }' ||
       fail "trajectory_kitti_camera.txt is not in the camera frame"
+    # The sweeps' intensities are a field of both map files (KITTI .pcd: 0-255).
+    grep -aq "^property float intensity$" "$work/out/map.ply" || fail "map.ply has no intensity property"
+    grep -aq "^FIELDS x y z intensity$" "$work/out/map.pcd" || fail "map.pcd has no intensity field"
+    grep -q '"map_intensity": true' "$work/out/run.json" || fail "run.json: map_intensity is not true"
     # The same sequence read directly (no convert step, no flag): the run
     # sees the events the dataset holds, so its outputs are the same bytes.
     code=$(run run --platform "$src/configs/platforms/kitti_hdl64.yaml" --data "$data/kitti00" --out "$work/direct" --quiet)

@@ -93,6 +93,28 @@ TEST(PcdWriter, AsciiIsOneShortestRoundTripLinePerPoint) {
   EXPECT_EQ(ReadText(dir / "cloud.pcd"), ExpectedHeader(2, "ascii") + "1.5 -0.25 3\n0.1 1e-30 -7e+20\n");
 }
 
+TEST(PcdWriter, IntensitiesAreAFourthField) {
+  ScratchFolder dir;
+  const std::vector<Eigen::Vector3f> points = {{1.5f, -0.25f, 3.0f}, {0.1f, 1e-30f, -7e20f}};
+  const std::vector<float> intensities = {0.5f, 252.45f};
+  WritePcdXyz(dir / "cloud.pcd", points, PcdEncoding::kAscii, &intensities);
+  std::string header = ExpectedHeader(2, "ascii");
+  const auto replace = [&header](const std::string& from, const std::string& to) {
+    header.replace(header.find(from), from.size(), to);
+  };
+  replace("FIELDS x y z\n", "FIELDS x y z intensity\n");
+  replace("SIZE 4 4 4\n", "SIZE 4 4 4 4\n");
+  replace("TYPE F F F\n", "TYPE F F F F\n");
+  replace("COUNT 1 1 1\n", "COUNT 1 1 1 1\n");
+  EXPECT_EQ(ReadText(dir / "cloud.pcd"), header + "1.5 -0.25 3 0.5\n0.1 1e-30 -7e+20 252.45\n");
+  WritePcdXyz(dir / "cloud.pcd", points, PcdEncoding::kBinary, &intensities);
+  const std::string bytes = ReadText(dir / "cloud.pcd");
+  EXPECT_EQ(bytes.size(), bytes.find("DATA binary\n") + 12 + 2 * 16) << "16 bytes per point";
+  const std::vector<float> one = {1.0f};
+  EXPECT_THROW(WritePcdXyz(dir / "other.pcd", points, PcdEncoding::kBinary, &one), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "other.pcd"));
+}
+
 TEST(PcdWriter, NonFinitePointsAreWrittenAsTheyAre) {
   ScratchFolder dir;
   const float nan = std::numeric_limits<float>::quiet_NaN();

@@ -95,6 +95,26 @@ TEST(PlyWriter, KnownBytesOfOnePoint) {
   EXPECT_EQ(bytes.substr(header.size()), data);
 }
 
+TEST(PlyWriter, IntensitiesAreAFourthPropertyAndReadBack) {
+  ScratchFolder dir;
+  const std::vector<Eigen::Vector3f> points = FinitePoints(5000, 4);
+  std::vector<float> intensities;
+  for (std::size_t i = 0; i < points.size(); ++i) intensities.push_back(0.25f * static_cast<float>(i));
+  WritePly(dir / "map.ply", points, &intensities);
+  const std::string bytes = ReadText(dir / "map.ply");
+  const std::string end = "property float z\nproperty float intensity\nend_header\n";
+  const std::size_t data = bytes.find(end) + end.size();
+  ASSERT_NE(bytes.find(end), std::string::npos);
+  ASSERT_EQ(bytes.size(), data + 16 * points.size());
+  float last = 0.0f;
+  std::memcpy(&last, &bytes[data + 16 * (points.size() - 1) + 12], sizeof(float));
+  EXPECT_EQ(last, intensities.back());
+  ExpectSamePoints(points, ReadPlyVertices(dir / "map.ply"));  // a reader by the header skips the extra property
+  const std::vector<float> too_few = {1.0f};
+  EXPECT_THROW(WritePly(dir / "bad.ply", points, &too_few), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.ply"));
+}
+
 TEST(PlyWriter, EmptyCloudIsAValidFile) {
   ScratchFolder dir;
   WritePly(dir / "empty.ply", {});
