@@ -1,6 +1,7 @@
 #include "estimation/MakeMotionPrior.hpp"
 
 #include "estimation/ConstantVelocityPrior.hpp"
+#include "estimation/StaticBodyPrior.hpp"
 #include "estimation/WheelOdometryPrior.hpp"
 
 namespace unimap::estimation {
@@ -11,6 +12,8 @@ std::unique_ptr<MotionPrior> MakeMotionPrior(const MotionPriorOptions& options) 
       return std::make_unique<WheelOdometryPrior>(options);
     case MotionSource::kConstantVelocity:
       return std::make_unique<ConstantVelocityPrior>(options);
+    case MotionSource::kStatic:
+      return std::make_unique<StaticBodyPrior>();
     case MotionSource::kImu:
       break;
   }

@@ -45,6 +45,8 @@ bool ParseMotionSource(const std::string& text, MotionSource* source) {
     *source = MotionSource::kWheelOdometry;
   } else if (text == "constant-velocity") {
     *source = MotionSource::kConstantVelocity;
+  } else if (text == "static") {
+    *source = MotionSource::kStatic;
   } else {
     return false;
   }
@@ -53,6 +55,7 @@ bool ParseMotionSource(const std::string& text, MotionSource* source) {
 
 void MotionPriorOptions::VisitFields(options::FieldVisitor& v) {
   v.SetElsewhere("source", "the dataset's streams or `unimap run --motion`");
+  v.Field("static_body", &static_body, "");
   v.Field("odometry_sigma_per_m", &odometry_sigma_per_m, "m/m");
   v.Field("odometry_sigma_rad_per_rad", &odometry_sigma_rad_per_rad, "rad/rad");
   v.Field("odometry_sigma_rad_per_m", &odometry_sigma_rad_per_m, "rad/m");

@@ -12,11 +12,14 @@ enum class MotionSource {
   kImu,               // the ESKF integrates the IMU (default; the paper's method)
   kWheelOdometry,     // increments of the dataset's odometry.csv
   kConstantVelocity,  // the velocity of the last two localised poses
+  kStatic,            // the body does not move: scans placed at the start pose, not matched
 };
 
 // Noise of the motion priors used without an IMU.
 struct MotionPriorOptions {
   MotionSource source = MotionSource::kImu;  // see MotionSource
+  bool static_body = false;                  // the platform's body never moves (a scanner on a fixed stand):
+                                             // `unimap run` then picks kStatic whatever the data holds
   double odometry_sigma_per_m = 0.05;        // wheel odometry: position sigma per metre travelled
   double odometry_sigma_rad_per_rad = 0.05;  // wheel odometry: rotation sigma per radian turned
   double odometry_sigma_rad_per_m = 0.005;   // wheel odometry: rotation sigma per metre travelled
@@ -40,7 +43,7 @@ struct MotionPriorOptions {
 // constant-velocity sigmas: diag((velocity_sigma_m_s dt)^2 x3, (rate_sigma_rad_s dt)^2 x3).
 Eigen::Matrix<double, 6, 6> UnmodeledMotionCovariance(const MotionPriorOptions& options, double dt);
 
-// "imu", "odometry", "constant-velocity"; false for anything else.
+// "imu", "odometry", "constant-velocity", "static"; false for anything else.
 bool ParseMotionSource(const std::string& text, MotionSource* source);
 
 }  // namespace unimap::estimation

@@ -290,7 +290,9 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   ScanDiagnostics diagnostics;
   diagnostics.predicted_sd = eskf_.PoseCovariance().diagonal().cwiseSqrt();
   std::shared_ptr<const map::DistanceField> field = map_->Snapshot();
-  if (field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
+  // A static body has nothing to estimate: its scans are placed, not matched.
+  const bool static_body = options_.motion.source == estimation::MotionSource::kStatic;
+  if (!static_body && field->CellCount() > 0 && static_cast<int>(points_body.size()) >= options_.min_points_to_match) {
     const bool is_line = std::holds_alternative<LineScan>(scan);
     double match_s = 0.0;
     ScanMatchResult matched_scan;
@@ -320,7 +322,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
       }
     }
   }
-  ++(matched ? stats_.scans_matched : stats_.scans_unmatched);
+  ++(static_body ? stats_.scans_static : matched ? stats_.scans_matched : stats_.scans_unmatched);
   const Eigen::Isometry3d T_map_body = estimation::ApplyPoseError(T_predicted, correction);
   if (matched) {
     history_.Clear();

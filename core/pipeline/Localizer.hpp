@@ -47,6 +47,7 @@ struct LocalizerStats {
   std::size_t scans = 0;               // scans received
   std::size_t scans_matched = 0;       // with a GPF update
   std::size_t scans_unmatched = 0;     // localised by the IMU only (no map yet, too few points, GPF failure)
+  std::size_t scans_static = 0;        // placed at the start pose, not matched (MotionSource::kStatic)
   std::size_t scans_searched = 0;      // matched with a wide search (uncertain prediction or poor match)
   std::size_t scans_reacquired = 0;    // of those, placed where the search found them (prediction was off)
   std::size_t scans_bad_input = 0;     // rejected by the payload (NaN points, times, ...): skipped

@@ -44,7 +44,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       std::cout << "data: " << options.data_dir << " read directly as " << data.recording_format
                 << " (converted as it is read, payload " << reader.metadata().payload << ")\n";
     }
-    const MotionChoice motion = ChooseMotion(options.motion, reader);
+    const MotionChoice motion = ChooseMotion(options.motion, reader, mapper_options.localizer.motion.static_body);
     mapper_options.localizer.motion.source = motion.source;
     std::cout << "motion: " << motion.name << " (" << motion.reason << ")\n";
     CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);

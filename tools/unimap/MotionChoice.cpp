@@ -13,18 +13,23 @@ const char* Name(estimation::MotionSource source) {
       return "odometry";
     case estimation::MotionSource::kConstantVelocity:
       return "constant-velocity";
+    case estimation::MotionSource::kStatic:
+      return "static";
   }
   return "?";
 }
 
 }  // namespace
 
-MotionChoice ChooseMotion(const std::string& requested, io::DatasetReader& reader) {
+MotionChoice ChooseMotion(const std::string& requested, io::DatasetReader& reader, bool static_body) {
   const bool imu = reader.has_imu();
   const bool odometry = reader.has_odometry();
   MotionChoice choice;
   if (requested == "auto") {
-    if (imu) {
+    if (static_body) {
+      choice.source = estimation::MotionSource::kStatic;
+      choice.reason = "the platform's body does not move (mapper: motion: static_body): scans are placed, not matched";
+    } else if (imu) {
       choice.source = estimation::MotionSource::kImu;
       choice.reason = "the dataset has IMU data (imu.csv)";
     } else if (odometry) {
@@ -36,7 +41,7 @@ MotionChoice ChooseMotion(const std::string& requested, io::DatasetReader& reade
     }
   } else {
     if (!estimation::ParseMotionSource(requested, &choice.source)) {
-      throw InputError("--motion: unknown source '" + requested + "' (auto, imu, odometry, constant-velocity)");
+      throw InputError("--motion: unknown source '" + requested + "' (auto, imu, odometry, constant-velocity, static)");
     }
     if (choice.source == estimation::MotionSource::kImu && !imu) {
       throw InputError("--motion imu: the dataset has no IMU data (imu.csv absent or empty); use --motion " +

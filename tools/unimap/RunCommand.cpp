@@ -46,10 +46,11 @@ void AddRunCommand(CLI::App* app) {
                 "Line scans (rotating 2D LiDARs): also measure the points farther than 1.5 voxels from the map "
                 "at the predicted pose, which are left out by default (docs/mapping.md)");
   cmd->add_option("--motion", options->motion,
-                  "Prediction between scans: auto (default: the IMU if the dataset has one, else its wheel "
-                  "odometry, else constant velocity), imu, odometry (the dataset's odometry.csv) or "
-                  "constant-velocity")
-      ->check(CLI::IsMember({"auto", "imu", "odometry", "constant-velocity"}));
+                  "Prediction between scans: auto (default: static for a platform whose body does not move, "
+                  "else the IMU if the dataset has one, else its wheel odometry, else constant velocity), imu, "
+                  "odometry (the dataset's odometry.csv), constant-velocity, or static (scans placed at the "
+                  "start pose, not matched: a scanner on a fixed stand)")
+      ->check(CLI::IsMember({"auto", "imu", "odometry", "constant-velocity", "static"}));
   cmd->add_option("--format", options->recording.format,
                   "The --data recording's format (default: detected; convert's --format)")
       ->check(CLI::IsMember({"kitti", "carmen", "rosbag", "ros2"}));

@@ -85,6 +85,7 @@ Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   o["encoder_rejected"] = s.encoder_rejected;
   o["scans_matched"] = s.scans_matched;
   o["scans_unmatched"] = s.scans_unmatched;
+  o["scans_static"] = s.scans_static;
   o["scans_searched"] = s.scans_searched;
   o["scans_reacquired"] = s.scans_reacquired;
   o["scans_bad_input"] = s.scans_bad_input;
@@ -228,7 +229,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
     std::cerr << "error: " << in.data_dir << ": " << summary.error << " (outputs hold what was processed)\n";
     return 2;
   }
-  if (in.stats.scans > 0 && in.stats.scans_matched == 0) {
+  if (in.stats.scans > 0 && in.stats.scans_matched == 0 && in.stats.scans_static == 0) {
     std::cerr << "error: " << in.data_dir << ": none of the " << in.stats.scans
               << " scans was matched against the map, so the trajectory and the map hold no LiDAR "
                  "information. "

@@ -80,6 +80,15 @@ case "$case_name" in
     for f in trajectory.tum trajectory_odometry.tum map.ply; do
       cmp -s "$work/out/$f" "$work/direct/$f" || fail "$f differs between the converted and the direct run"
     done
+    # The tilting stand does not move: --motion static places its slices
+    # without matching them, and a run of placed scans is no "nothing matched" error.
+    if [ "$case_name" = tilting_room ]; then
+      code=$(run run --platform "$hokuyo" --data "$work/data" --out "$work/static" --quiet --motion static)
+      [ "$code" = 0 ] || fail "--motion static: exit $code"
+      expect "^motion: static "
+      [ "$(json_number "$work/static/run.json" scans_static)" = 864 ] || fail "scans_static is not 864 (865 slices, 1 outside the encoder's span)"
+      [ "$(json_number "$work/static/run.json" scans_matched)" = 0 ] || fail "static scans were matched"
+    fi
     # A recording option with a dataset folder would be ignored: an error.
     code=$(run run --platform "$hokuyo" --data "$work/data" --out "$work/bad" --quiet --angle-unit deg)
     [ "$code" = 2 ] || fail "--angle-unit with a dataset folder: exit $code, expected 2"

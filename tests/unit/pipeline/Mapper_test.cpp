@@ -132,5 +132,52 @@ TEST(MapperTest, MapPointsLieOnTheTrueSurfaces) {
   EXPECT_LT(distances[distances.size() * 95 / 100], 0.12);
 }
 
+// A scanner that does not move (MotionSource::kStatic, a platform with
+// `mapper: motion: static_body`): the tunnel's 5 s static start (level and
+// at rest) mapped without matching. Every pose is the start pose, and the
+// map is the payload's geometry alone: its points lie on the true surfaces
+// within the simulated range noise (1 cm standard deviation) and the
+// encoder's resolution, closer than the matched map above.
+TEST(MapperTest, AStaticBodyPlacesEveryScanAtTheStartPose) {
+  const Platform platform = LoadPlatform(test::kPlatform);
+  MapperOptions options = MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+  options.localizer.motion.source = estimation::MotionSource::kStatic;
+  Mapper mapper(options, platform.plugin.plugin);
+  io::DatasetReader reader(test::CleanDataset());
+  const fs::path file = test::Scratch("mapper_static") / "odometry.tum";
+  fs::create_directories(file.parent_path());
+  {
+    io::TumTrajectoryWriter trajectory(file);
+    RunOptions run;
+    run.max_duration_s = 4.5;  // the body starts moving at 5 s
+    RunDataset(reader, mapper, trajectory, run);
+  }
+  const std::vector<StampedPose> poses = io::ReadTumTrajectory(file);
+  ASSERT_GT(poses.size(), 150u);
+  for (const StampedPose& p : poses) EXPECT_TRUE(p.T_map_body.isApprox(poses.front().T_map_body, 1e-12));
+  EXPECT_EQ(mapper.localizer_stats().scans_static, poses.size());
+  EXPECT_EQ(mapper.localizer_stats().scans_matched, 0u);
+
+  const sim::Scenario scenario = sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
+  sim::World world = sim::LoadWorld(scenario.world, scenario.world_file);
+  world.Build();
+  io::DatasetReader truth(test::CleanDataset());
+  const std::optional<StampedPose> truth0 = truth.NextGroundTruth();
+  ASSERT_TRUE(truth0.has_value());
+  const Eigen::Isometry3d T_world_map = truth0->T_map_body * poses.front().T_map_body.inverse();
+  std::vector<double> distances;
+  for (const Eigen::Vector3f& p : mapper.MapPoints(0.1)) {
+    if (p.cast<double>().norm() > 5.0) continue;
+    distances.push_back(world.SurfaceDistance(T_world_map * p.cast<double>()));
+  }
+  ASSERT_GT(distances.size(), 500u);
+  std::sort(distances.begin(), distances.end());
+  double mean = 0.0;
+  for (double d : distances) mean += d / static_cast<double>(distances.size());
+  // Range noise N(0, 1 cm) alone: mean |d| 0.8 cm, 95 % within 1.96 cm.
+  EXPECT_LT(mean, 0.01);
+  EXPECT_LT(distances[distances.size() * 95 / 100], 0.02);
+}
+
 }  // namespace
 }  // namespace unimap::pipeline
