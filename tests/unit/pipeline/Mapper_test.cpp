@@ -56,6 +56,33 @@ const MappedTunnel& Mapped() {
   return result;
 }
 
+// Distances (sorted) from the true tunnel surfaces of the map points within
+// 5 m of the start, the map moved into the world with the true start pose
+// (the truth's first pose is that of the first estimate, T_map_start).
+std::vector<double> SortedSurfaceDistances(const std::vector<Eigen::Vector3f>& map,
+                                           const Eigen::Isometry3d& T_map_start) {
+  const sim::Scenario scenario = sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
+  sim::World world = sim::LoadWorld(scenario.world, scenario.world_file);
+  world.Build();
+  io::DatasetReader reader(test::CleanDataset());
+  const std::optional<StampedPose> truth0 = reader.NextGroundTruth();
+  if (!truth0) return {};
+  const Eigen::Isometry3d T_world_map = truth0->T_map_body * T_map_start.inverse();
+  std::vector<double> distances;
+  for (const Eigen::Vector3f& p : map) {
+    if ((p.cast<double>() - T_map_start.translation()).norm() > 5.0) continue;
+    distances.push_back(world.SurfaceDistance(T_world_map * p.cast<double>()));
+  }
+  std::sort(distances.begin(), distances.end());
+  return distances;
+}
+
+double Mean(const std::vector<double>& values) {
+  double mean = 0.0;
+  for (double v : values) mean += v / static_cast<double>(values.size());
+  return mean;
+}
+
 TEST(MapperTest, ThreeDScansAndSubmapsFollowTheTwoStageScheme) {
   const MappedTunnel& m = Mapped();
   EXPECT_EQ(m.localizer.scans, 240u);
@@ -101,29 +128,13 @@ TEST(MapperTest, MapPointsHaveNoIntensitiesWhenTheScansHadNone) {
 TEST(MapperTest, MapPointsLieOnTheTrueSurfaces) {
   const MappedTunnel& m = Mapped();
   ASSERT_GT(m.map.size(), 1000u);
-  // The map is in the mapper's frame (the start pose): move it into the
-  // world with the true start pose (the truth's first pose is that of the
-  // first estimate; the platform is static for the first second).
-  const sim::Scenario scenario = sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
-  sim::World world = sim::LoadWorld(scenario.world, scenario.world_file);
-  world.Build();
-  io::DatasetReader reader(test::CleanDataset());
-  const std::optional<StampedPose> truth0 = reader.NextGroundTruth();
-  ASSERT_TRUE(truth0.has_value());
-  const Eigen::Isometry3d T_world_map = truth0->T_map_body * m.streamed.front().T_map_body.inverse();
-  // The gravity alignment absorbs the accelerometer bias (0.05, -0.04 m/s^2
-  // in this scenario) as a tilt of |b| / g = 0.37 deg, which moves points
-  // 15 m away by up to 10 cm; within 5 m of the start it stays under 3 cm.
-  const Eigen::Vector3d start = m.streamed.front().T_map_body.translation();
-  std::vector<double> distances;
-  for (const Eigen::Vector3f& p : m.map) {
-    if ((p.cast<double>() - start).norm() > 5.0) continue;
-    distances.push_back(world.SurfaceDistance(T_world_map * p.cast<double>()));
-  }
+  // The map is in the mapper's frame (the start pose). The gravity
+  // alignment absorbs the accelerometer bias (0.05, -0.04 m/s^2 in this
+  // scenario) as a tilt of |b| / g = 0.37 deg, which moves points 15 m away
+  // by up to 10 cm; within 5 m of the start it stays under 3 cm.
+  const std::vector<double> distances = SortedSurfaceDistances(m.map, m.streamed.front().T_map_body);
   ASSERT_GT(distances.size(), 500u);
-  std::sort(distances.begin(), distances.end());
-  double mean = 0.0;
-  for (double d : distances) mean += d / static_cast<double>(distances.size());
+  const double mean = Mean(distances);
   // Each kept point is a real return (1 cm range noise) placed with the
   // localised pose of its scan; on this static start the estimate itself
   // wanders by up to ~0.1 m in the first seconds (measured: mean 0.036 m,
@@ -158,22 +169,9 @@ TEST(MapperTest, AStaticBodyPlacesEveryScanAtTheStartPose) {
   EXPECT_EQ(mapper.localizer_stats().scans_static, poses.size());
   EXPECT_EQ(mapper.localizer_stats().scans_matched, 0u);
 
-  const sim::Scenario scenario = sim::LoadScenario(fs::path(UNIMAP_SOURCE_DIR) / "configs/scenarios/tunnel.yaml");
-  sim::World world = sim::LoadWorld(scenario.world, scenario.world_file);
-  world.Build();
-  io::DatasetReader truth(test::CleanDataset());
-  const std::optional<StampedPose> truth0 = truth.NextGroundTruth();
-  ASSERT_TRUE(truth0.has_value());
-  const Eigen::Isometry3d T_world_map = truth0->T_map_body * poses.front().T_map_body.inverse();
-  std::vector<double> distances;
-  for (const Eigen::Vector3f& p : mapper.MapPoints(0.1)) {
-    if (p.cast<double>().norm() > 5.0) continue;
-    distances.push_back(world.SurfaceDistance(T_world_map * p.cast<double>()));
-  }
+  const std::vector<double> distances = SortedSurfaceDistances(mapper.MapPoints(0.1), poses.front().T_map_body);
   ASSERT_GT(distances.size(), 500u);
-  std::sort(distances.begin(), distances.end());
-  double mean = 0.0;
-  for (double d : distances) mean += d / static_cast<double>(distances.size());
+  const double mean = Mean(distances);
   // Range noise N(0, 1 cm) alone: mean |d| 0.8 cm, 95 % within 1.96 cm.
   EXPECT_LT(mean, 0.01);
   EXPECT_LT(distances[distances.size() * 95 / 100], 0.02);
