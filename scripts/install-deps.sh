@@ -13,6 +13,6 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libeigen3-dev liboctomap-dev libdynamicedt3d-dev libceres-dev \
   libboost-dev libboost-filesystem-dev libpcl-dev libyaml-cpp-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libtbb-dev libcli11-dev libspdlog-dev robin-map-dev \
-  libbz2-dev librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libsqlite3-dev libfastcdr-dev \
+  libbz2-dev zlib1g-dev librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libsqlite3-dev libfastcdr-dev \
   nlohmann-json3-dev libcairo2-dev fonts-dejavu-core libjs-three libjs-dygraphs \
   chromium python3 python3-dev python3-numpy pybind11-dev clang-format-14
