@@ -24,7 +24,7 @@ while kill -0 "$pid" 2>/dev/null; do
   status=$(cat "/proc/$pid/status" 2>/dev/null || true)
   rss=$(awk '/^VmRSS/ {print int($2 / 1024)}' <<< "$status")
   hwm=$(awk '/^VmHWM/ {print int($2 / 1024)}' <<< "$status")
-  pct=$(tr '\r' '\n' < "$W/progress.log" | grep -o '| [0-9]*% |' | tail -n 1 | tr -dc '0-9' || true)
+  pct=$(tr '\r' '\n' < "$W/progress.log" | grep -ao '| [0-9]*% |' | tail -n 1 | tr -dc '0-9' || true)
   t=$(awk -v p="${pct:-0}" -v d="${duration:-0}" 'BEGIN { printf "%.0f", p * d / 100 }')
   [ -n "$rss" ] && echo "$(( $(date +%s) - start )) ${t:-0} $rss $hwm" >> "$W/memory.txt"
   sleep 10
