@@ -5,6 +5,7 @@
 #include "CommandLine.hpp"
 #include "FolderReport.hpp"
 #include "MapEvaluation.hpp"
+#include "OutputFrames.hpp"
 #include "PlatformJson.hpp"
 #include "SignalGuard.hpp"
 
@@ -164,6 +165,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
   run["command"] = CommandLine();                                // the report's source of options
   run["parameters"] = PlatformParametersJson(in.platform_file);  // effective values and their sources
   for (const auto& [key, object] : in.extras) run[key] = object;
+  run["frames"] = OutputFramesJson(out, in.world_frame_errors);
   // The truth and the estimate, read once for every evaluation below.
   std::vector<StampedPose> truth;
   std::vector<StampedPose> estimate;

@@ -42,6 +42,9 @@ case "$case_name" in
       if (ez < 0.85 * tz || ez > 1.15 * tz || (ex - tx)^2 + (ey - ty)^2 > 0.25) {
         print "camera-frame pose 15 (" ex ", " ey ", " ez ") vs truth (" tx ", " ty ", " tz ")"; exit 1 } }' ||
       fail "trajectory_kitti_camera.txt is not in the camera frame"
+    # run.json says each output's frame.
+    grep -q '"trajectory_kitti_camera.txt": "T_cam0_cam per scan' "$work/out/run.json" || fail "run.json: no frame for trajectory_kitti_camera.txt"
+    grep -q '"trajectory.tum": "T_map_body per scan' "$work/out/run.json" || fail "run.json: no frame for trajectory.tum"
     # The sweeps' intensities are a field of both map files (KITTI .pcd: 0-255).
     grep -aq "^property float intensity$" "$work/out/map.ply" || fail "map.ply has no intensity property"
     grep -aq "^FIELDS x y z intensity$" "$work/out/map.pcd" || fail "map.pcd has no intensity field"
