@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "BenchCases.hpp"
 #include "StageInputs.hpp"
 #include "map/SurfaceDistanceLayer.hpp"
 #include "matching/GaussianParticleFilter.hpp"
@@ -20,26 +21,6 @@
 
 namespace unimap::bench {
 namespace {
-
-struct Case {
-  const char* scenario;
-  const char* platform;
-  double duration_s;
-};
-
-// One pair per payload, at the scenario it was made for, and the
-// robustness matrix's slowest pair (10 s each).
-constexpr Case kCases[] = {
-    {"corridor_loop", "fixed_vlp16", 10.0},
-    {"patio", "rotating_vlp16", 10.0},
-    {"narrow_hallway", "rotating_hokuyo", 10.0},
-    {"patio", "fixed_vlp16", 10.0},
-};
-
-const StageInputs& CaseInputs(const benchmark::State& state) {
-  const Case& c = kCases[state.range(0)];
-  return Inputs(c.scenario, c.platform, c.duration_s);
-}
 
 // The map after every key scan of the inputs.
 std::unique_ptr<map::SurfaceDistanceLayer> FullMap(const StageInputs& in) {
@@ -264,10 +245,6 @@ void BM_TrilinearLookup(benchmark::State& state) {
     i = (i + 1) % probes.size();
   }
   state.SetItemsProcessed(state.iterations());
-}
-
-void AllCases(benchmark::internal::Benchmark* b) {
-  for (int i = 0; i < static_cast<int>(sizeof(kCases) / sizeof(kCases[0])); ++i) b->Arg(i);
 }
 
 BENCHMARK(BM_Deskew)->Apply(AllCases);
