@@ -262,6 +262,15 @@ convert)
     convert --format rosbag --input "$work/random.bag" --out "$work/r_random"
   case_ rosbag_header_only "ROS bag: only the version line" 2 "header.bag: cannot read ROS bag" \
     convert --format rosbag --input "$work/header.bag" --out "$work/r_header"
+  # The same recordings given to `run` directly (converted as it reads them).
+  case_ run_direct_kitti_bin_size "run on a KITTI folder directly: a .bin of 20 bytes" 2 \
+    "000000.bin: size 20 bytes is not a multiple of 16" \
+    run --platform "$src/configs/platforms/kitti_hdl64.yaml" --quiet --data "$work/kitti_odd" --out "$work/d_kitti"
+  case_ run_direct_carmen_clock_jump "run on a CARMEN log directly: a FLASER 4990 s after the previous one" 2 \
+    "jump.clf:2: ipc timestamp 5000 s jumps 4989.9 s past the previous message's" \
+    run --platform "$hokuyo" --force-payload --quiet --data "$work/jump.clf" --out "$work/d_jump"
+  case_ run_direct_rosbag_random "run on a .bag of 5000 binary bytes" 2 "random.bag: cannot read ROS bag" \
+    run --platform "$hokuyo" --quiet --data "$work/random.bag" --out "$work/d_random"
   ;;
 cli)
   base_dataset 3
