@@ -9,9 +9,10 @@ namespace unimap::io {
 
 // Where a conversion (io/DatasetConversion.hpp) puts what it reads: a
 // dataset folder (DatasetWriter) or a run reading the recording directly
-// (LiveConversion). Contract of every implementation: each stream is written
-// in non-decreasing time order (scans by ScanEndTime) and Finish() is called
-// once after the last item; a violation throws InputError.
+// (LiveConversion). Callers write each stream in non-decreasing time order
+// (scans by ScanEndTime) and call Finish() once after the last item
+// (DatasetWriter throws InputError on a violation; a live run's reader
+// drops and counts an item out of order, DatasetReader::late_events).
 class DatasetSink {
  public:
   virtual ~DatasetSink() = default;

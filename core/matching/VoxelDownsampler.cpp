@@ -12,31 +12,6 @@ std::uint64_t VoxelKey(const Eigen::Vector3f& p, double inv_voxel) {
   return VoxelCellKey(Eigen::Vector3i(cell(p.x()), cell(p.y()), cell(p.z())));
 }
 
-std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m, int max_points,
-                                             std::uint64_t seed) {
-  std::vector<Eigen::Vector3f> kept;
-  if (voxel_m > 0.0) {
-    const double inv_voxel = 1.0 / voxel_m;
-    VoxelKeySet seen;
-    seen.reserve(points.size());
-    for (const auto& p : points) {
-      if (seen.insert(VoxelKey(p, inv_voxel)).second) kept.push_back(p);
-    }
-  } else {
-    kept = points;
-  }
-  if (max_points > 0 && static_cast<int>(kept.size()) > max_points) {
-    // Partial Fisher-Yates: the first max_points entries become a uniform sample.
-    std::mt19937_64 rng(seed);
-    for (int i = 0; i < max_points; ++i) {
-      std::uniform_int_distribution<std::size_t> pick(static_cast<std::size_t>(i), kept.size() - 1);
-      std::swap(kept[static_cast<std::size_t>(i)], kept[pick(rng)]);
-    }
-    kept.resize(static_cast<std::size_t>(max_points));
-  }
-  return kept;
-}
-
 std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& points, double voxel_m) {
   std::vector<std::size_t> kept;
   if (voxel_m <= 0.0) {
@@ -49,6 +24,28 @@ std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& p
   seen.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (seen.insert(VoxelKey(points[i], inv_voxel)).second) kept.push_back(i);
+  }
+  return kept;
+}
+
+std::vector<Eigen::Vector3f> VoxelDownsample(const std::vector<Eigen::Vector3f>& points, double voxel_m, int max_points,
+                                             std::uint64_t seed) {
+  std::vector<Eigen::Vector3f> kept;
+  if (voxel_m > 0.0) {
+    const std::vector<std::size_t> first = VoxelFirstIndices(points, voxel_m);
+    kept.reserve(first.size());
+    for (const std::size_t i : first) kept.push_back(points[i]);
+  } else {
+    kept = points;
+  }
+  if (max_points > 0 && static_cast<int>(kept.size()) > max_points) {
+    // Partial Fisher-Yates: the first max_points entries become a uniform sample.
+    std::mt19937_64 rng(seed);
+    for (int i = 0; i < max_points; ++i) {
+      std::uniform_int_distribution<std::size_t> pick(static_cast<std::size_t>(i), kept.size() - 1);
+      std::swap(kept[static_cast<std::size_t>(i)], kept[pick(rng)]);
+    }
+    kept.resize(static_cast<std::size_t>(max_points));
   }
   return kept;
 }

@@ -273,13 +273,6 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::vector<Eigen::Vector3f> points_body;
   points_body.reserve(body.points.size());
   for (const Point& p : body.points) points_body.push_back(p.position_m.cast<float>());
-  // Intensities go with the points into the key scans (and the final map)
-  // when the input has any: a scan of zeros has none to keep.
-  std::vector<float> intensities;
-  if (std::any_of(body.points.begin(), body.points.end(), [](const Point& p) { return p.intensity != 0.0f; })) {
-    intensities.reserve(body.points.size());
-    for (const Point& p : body.points) intensities.push_back(p.intensity);
-  }
 
   // GPF -> pseudo measurement -> ESKF update (docs/design.md 1.3). The state may
   // be a few ms past t_end (waiting for the encoder): the pose error is
@@ -354,6 +347,13 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   std::vector<Eigen::Vector3f> filled;  // the distance map only: key scans keep the measured points
   if (const auto* line = std::get_if<LineScan>(&scan); line && line_fill_) {
     filled = line_fill_->Add(t_end, sensor_map, map::LineReturns(*line, body, points_map));
+  }
+  // Intensities go with the points into the key scans (and the final map)
+  // when the input has any: a scan of zeros has none to keep.
+  std::vector<float> intensities;
+  if (std::any_of(body.points.begin(), body.points.end(), [](const Point& p) { return p.intensity != 0.0f; })) {
+    intensities.reserve(body.points.size());
+    for (const Point& p : body.points) intensities.push_back(p.intensity);
   }
   if (accumulator_.Add(points_map, intensities, sensor_map, filled)) {
     Eigen::Vector3f origin;

@@ -207,16 +207,11 @@ int RunLocalize(const LocalizeCliOptions& options) {
     const pipeline::RunSummary summary =
         RunSinkToFolder(reader, localizer, out, "trajectory.tum", options.max_duration_s, options.quiet);
 
-    Json recording = Json::object();
-    const std::filesystem::path recording_truth = FinishRecording(data, out, &recording);
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, localizer.stats(), reader.has_groundtruth());
     outputs.world_frame_errors = true;
-    if (!data.recording_format.empty()) {
-      outputs.truth_file = recording_truth;
-      outputs.extras.emplace_back("recording", recording);
-    }
+    FinishRecording(data, &outputs);
     Json extra = Json::object();
     extra["map"] = options.map_file;
     extra["map_points"] = map_points;

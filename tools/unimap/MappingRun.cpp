@@ -70,16 +70,11 @@ int RunMappingToFolder(const MappingRunOptions& options) {
       mapping = WriteMapOutputs(out, mapper, map_options);
     }
 
-    Json recording = Json::object();
-    const std::filesystem::path recording_truth = FinishRecording(data, out, &recording);
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
                             options.threads, summary, mapper.localizer_stats(), reader.has_groundtruth());
     outputs.odometry_file = kOdometryFile;
-    if (!data.recording_format.empty()) {
-      outputs.truth_file = recording_truth;
-      outputs.extras.emplace_back("recording", recording);
-    }
+    FinishRecording(data, &outputs);
     outputs.gpf_seed = options.seed;
     outputs.map_file = "map.ply";  // (read without PCL)
     outputs.motion = motion.name;

@@ -121,12 +121,12 @@ OpenedData OpenData(const std::string& data, const RecordingOptions& recording) 
   return opened;
 }
 
-std::filesystem::path FinishRecording(OpenedData& data, const std::filesystem::path& out_dir, Json* run_json) {
-  if (data.recording_format.empty()) return {};
+void FinishRecording(OpenedData& data, RunOutputsInput* outputs) {
+  if (data.recording_format.empty()) return;
   io::DatasetReader& reader = *data.reader;
   std::filesystem::path truth;
   if (reader.has_groundtruth()) {
-    truth = out_dir / "groundtruth.tum";
+    truth = outputs->out_dir / "groundtruth.tum";
     io::TumTrajectoryWriter writer(truth);
     while (const std::optional<StampedPose> pose = reader.NextGroundTruth()) writer.Write(*pose);
     writer.Close();
@@ -158,8 +158,8 @@ std::filesystem::path FinishRecording(OpenedData& data, const std::filesystem::p
               << " items dropped: they arrived after a later item of another stream had been processed\n";
   }
   if (!truth.empty()) o["groundtruth_file"] = truth.filename().string();
-  *run_json = o;
-  return truth;
+  outputs->truth_file = truth;
+  outputs->extras.emplace_back("recording", o);
 }
 
 }  // namespace unimap::cli

@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "Json.hpp"
+#include "RunOutputs.hpp"
 #include "io/DatasetConversion.hpp"
 #include "io/DatasetReader.hpp"
 
@@ -44,11 +44,12 @@ struct OpenedData {
 OpenedData OpenData(const std::string& data, const RecordingOptions& recording);
 
 // After a run of a recording read directly: writes the ground truth it held
-// to out_dir/groundtruth.tum (returned; empty path when there was none) and
-// says in *run_json what was read: the format, the conversion's report
-// (counts, skips, notes; "complete": false when the run stopped before the
-// recording's end) and the events dropped for arriving late. Prints the
-// report's skips and notes. Nothing for a dataset folder.
-std::filesystem::path FinishRecording(OpenedData& data, const std::filesystem::path& out_dir, Json* run_json);
+// to outputs->out_dir/groundtruth.tum and makes it outputs->truth_file (when
+// there was any), and adds run.json's "recording" to outputs->extras: the
+// format, the conversion's report (counts, skips, notes; "complete": false
+// when the run stopped before the recording's end) and the events dropped
+// for arriving late. Prints the report's skips and notes. Nothing for a
+// dataset folder.
+void FinishRecording(OpenedData& data, RunOutputsInput* outputs);
 
 }  // namespace unimap::cli
