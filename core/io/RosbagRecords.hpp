@@ -10,8 +10,10 @@ namespace unimap::io {
 // a u32 header length, the header (fields: u32 length, "name=value"), a u32
 // data length and the data. Throws InputError "<bag>: record at byte B: <reason>"
 // when a length runs past the end of the file or its header, a field has
-// no '=', or a chunk announces more than 1 GiB uncompressed (or, stored
-// uncompressed, another size than its data).
+// no '=', a chunk announces more than 1 GiB uncompressed (or, stored
+// uncompressed, another size than its data), or the bag header's index_pos
+// or a chunk info's chunk_pos is not the start of a record walked (of a
+// chunk for chunk_pos): librosbag reads a record there.
 void CheckRosbagRecords(const std::filesystem::path& bag);
 
 }  // namespace unimap::io

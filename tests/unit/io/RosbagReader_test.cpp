@@ -247,6 +247,42 @@ TEST(RosbagReaderTest, Bz2BagWithRelativePointTimesImuAndEncoder) {
   EXPECT_EQ(written_imu, 30u);
   EXPECT_EQ(written_encoder, 3u);
 }
+
+// Adds delta to the 8-byte value of the first header field `name=` in the
+// bag's bytes (index_pos in the bag header, chunk_pos in a chunk info).
+void ShiftPosition(const fs::path& file, const std::string& name, std::uint64_t delta) {
+  std::string bytes = test::ReadText(file);  // (binary-safe)
+  const std::size_t at = bytes.find(name + "=");
+  ASSERT_NE(at, std::string::npos) << name;
+  std::uint64_t value = 0;
+  std::memcpy(&value, &bytes[at + name.size() + 1], 8);  // little-endian, as the bag stores it
+  value += delta;
+  std::memcpy(&bytes[at + name.size() + 1], &value, 8);
+  test::WriteText(file, bytes);
+}
+
+// Found by fuzzing (regressions/rosbag/oom-index-pos-inside-a-record.bag):
+// librosbag reads a record wherever index_pos or a chunk_pos points and
+// allocates the header length it finds there.
+TEST(RosbagReaderTest, PositionsThatAreNoRecordStartAreErrors) {
+  test::ScratchFolder dir;
+  for (const std::string field : {"index_pos", "chunk_pos"}) {
+    const fs::path file = dir.path() / (field + ".bag");
+    WriteBz2Bag(file);
+    ShiftPosition(file, field, 90);
+    try {
+      RosbagReader reader(file);
+      ADD_FAILURE() << field << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+      EXPECT_NE(what.find("its " + field + " "), std::string::npos) << what;
+      EXPECT_NE(what.find(field == "index_pos" ? "is not the start of a record" : "is not the start of a chunk"),
+                std::string::npos)
+          << what;
+    }
+  }
+}
 #endif
 
 }  // namespace
