@@ -1,5 +1,10 @@
 #include "io/RosbagRecords.hpp"
 
+#include <bzlib.h>
+#if UNIMAP_WITH_ROSBAG
+#include <roslz4/lz4s.h>
+#endif
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -17,8 +22,10 @@ constexpr char kMagic[] = "#ROSBAG V2.0\n";
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 20;  // real headers: tens of bytes to a few KiB
 constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 30;   // ROS writes 768 KiB chunks by default
 constexpr std::uint8_t kBagHeaderOp = 0x03;
+constexpr std::uint8_t kIndexDataOp = 0x04;
 constexpr std::uint8_t kChunkOp = 0x05;
 constexpr std::uint8_t kChunkInfoOp = 0x06;
+constexpr std::uint64_t kIndexEntryBytes = 12;  // u32 secs, u32 nsecs, u32 offset into the chunk
 
 std::uint32_t U32(const unsigned char* bytes) {
   return static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8 |
@@ -27,6 +34,89 @@ std::uint32_t U32(const unsigned char* bytes) {
 
 std::uint64_t U64(const unsigned char* bytes) {
   return static_cast<std::uint64_t>(U32(bytes)) | static_cast<std::uint64_t>(U32(bytes + 4)) << 32;
+}
+
+// What CheckRosbagRecords needs of a record's header.
+struct RecordHeader {
+  std::uint8_t op = 0;
+  std::string compression;  // a chunk's
+  bool has_size = false;    // a chunk's uncompressed size
+  std::uint64_t size = 0;
+  bool has_position = false;  // index_pos (bag header) or chunk_pos (chunk info)
+  std::uint64_t position = 0;
+};
+
+// Parses the fields (u32 length, "name=value") of a header of n bytes.
+RecordHeader ParseHeader(const unsigned char* h, std::uint64_t n, const std::string& where) {
+  RecordHeader out;
+  for (std::uint64_t f = 0; f < n;) {
+    if (n - f < 4) throw InputError(where + "a header field is cut");
+    const std::uint64_t field_bytes = U32(&h[f]);
+    if (field_bytes > n - f - 4) throw InputError(where + "a header field runs past its header");
+    const std::string field(reinterpret_cast<const char*>(&h[f + 4]), field_bytes);
+    const std::size_t equals = field.find('=');
+    if (equals == std::string::npos) throw InputError(where + "a header field has no '='");
+    const std::string key = field.substr(0, equals), value = field.substr(equals + 1);
+    const auto* v = reinterpret_cast<const unsigned char*>(value.data());
+    if (key == "op" && value.size() == 1) out.op = v[0];
+    if (key == "compression") out.compression = value;
+    if (key == "size" && value.size() == 4) {
+      out.size = U32(v);
+      out.has_size = true;
+    }
+    if ((key == "index_pos" || key == "chunk_pos") && value.size() == 8) {
+      out.position = U64(v);
+      out.has_position = true;
+    }
+    f += 4 + field_bytes;
+  }
+  return out;
+}
+
+// The records inside a chunk's uncompressed data, walked as the file's are:
+// returns their starts (the offsets its index data may name).
+std::vector<std::uint64_t> WalkChunk(const std::vector<unsigned char>& data, const std::string& where) {
+  std::vector<std::uint64_t> starts;
+  const std::uint64_t size = data.size();
+  for (std::uint64_t at = 0; at < size;) {
+    const std::string inner = where + "the chunk's record at offset " + std::to_string(at) + ": ";
+    if (size - at < 4) throw InputError(inner + "truncated length");
+    const std::uint64_t header_bytes = U32(&data[at]);
+    if (header_bytes > size - at - 4) throw InputError(inner + "a header running past the chunk");
+    ParseHeader(&data[at + 4], header_bytes, inner);
+    if (size - at - 4 - header_bytes < 4) throw InputError(inner + "truncated data length");
+    const std::uint64_t data_bytes = U32(&data[at + 4 + header_bytes]);
+    if (data_bytes > size - at - 8 - header_bytes) throw InputError(inner + "data running past the chunk");
+    starts.push_back(at);
+    at += 8 + header_bytes + data_bytes;
+  }
+  return starts;
+}
+
+// A chunk's data uncompressed to its announced size.
+std::vector<unsigned char> Uncompress(std::vector<unsigned char> data, const RecordHeader& chunk,
+                                      const std::string& where) {
+  if (chunk.compression == "none") return data;
+  std::vector<unsigned char> out(chunk.size);
+  unsigned int out_bytes = static_cast<unsigned int>(chunk.size);
+  int ok = 0;
+  if (chunk.compression == "bz2") {
+    ok = BZ2_bzBuffToBuffDecompress(reinterpret_cast<char*>(out.data()), &out_bytes,
+                                    reinterpret_cast<char*>(data.data()), static_cast<unsigned int>(data.size()), 0,
+                                    0) == BZ_OK;
+#if UNIMAP_WITH_ROSBAG
+  } else if (chunk.compression == "lz4") {
+    ok = roslz4_buffToBuffDecompress(reinterpret_cast<char*>(data.data()), static_cast<unsigned int>(data.size()),
+                                     reinterpret_cast<char*>(out.data()), &out_bytes) == ROSLZ4_OK;
+#endif
+  } else {
+    throw InputError(where + "a chunk compressed as \"" + chunk.compression + "\" (none, bz2 and lz4 are read)");
+  }
+  if (!ok || out_bytes != chunk.size) {
+    throw InputError(where + "a " + chunk.compression + " chunk that does not uncompress to its " +
+                     std::to_string(chunk.size) + " bytes");
+  }
+  return out;
 }
 
 // A position another record points to (librosbag seeks there and reads a record).
@@ -50,8 +140,9 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
     throw InputError(name + ": cannot read ROS bag: not a ROS bag of format 2.0 (no \"#ROSBAG V2.0\" line)");
   }
   std::uint64_t at = sizeof(magic);
-  std::vector<unsigned char> header;
+  std::vector<unsigned char> header, data;
   std::vector<std::uint64_t> starts, chunk_starts;  // of the records walked (ascending)
+  std::vector<std::uint64_t> chunk_records;         // the records inside the last chunk (offsets)
   std::vector<Pointer> pointers;
   while (at < size) {
     starts.push_back(at);
@@ -65,34 +156,7 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
     }
     header.resize(header_bytes);
     in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header_bytes));
-    std::uint64_t chunk_size = 0;
-    bool chunk = false, uncompressed = false, has_size = false;
-    std::uint8_t op = 0;
-    std::uint64_t position = 0;
-    bool has_position = false;
-    for (std::uint64_t f = 0; f < header_bytes;) {
-      if (header_bytes - f < 4) throw InputError(where + "a header field is cut");
-      const std::uint64_t field_bytes = U32(&header[f]);
-      if (field_bytes > header_bytes - f - 4) throw InputError(where + "a header field runs past its header");
-      const std::string field(reinterpret_cast<const char*>(&header[f + 4]), field_bytes);
-      const std::size_t equals = field.find('=');
-      if (equals == std::string::npos) throw InputError(where + "a header field has no '='");
-      const std::string key = field.substr(0, equals), value = field.substr(equals + 1);
-      if (key == "op" && value.size() == 1) {
-        op = static_cast<std::uint8_t>(value[0]);
-        chunk = op == kChunkOp;
-      }
-      if ((key == "index_pos" || key == "chunk_pos") && value.size() == 8) {
-        position = U64(reinterpret_cast<const unsigned char*>(value.data()));
-        has_position = true;
-      }
-      if (key == "compression") uncompressed = value == "none";
-      if (key == "size" && value.size() == 4) {
-        chunk_size = U32(reinterpret_cast<const unsigned char*>(value.data()));
-        has_size = true;
-      }
-      f += 4 + field_bytes;
-    }
+    const RecordHeader fields = ParseHeader(header.data(), header_bytes, where);
     if (size - at - 4 - header_bytes < 4 || !in.read(reinterpret_cast<char*>(length), 4)) {
       throw InputError(where + "truncated data length");
     }
@@ -102,15 +166,39 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
       throw InputError(where + "data of " + std::to_string(data_bytes) + " bytes, " + std::to_string(left) +
                        " bytes left in the file");
     }
-    if (chunk && has_size && (chunk_size > kMaxChunkBytes || (uncompressed && chunk_size != data_bytes))) {
-      throw InputError(where + "a chunk announcing " + std::to_string(chunk_size) + " bytes uncompressed from " +
+    const bool chunk = fields.op == kChunkOp;
+    if (chunk && fields.has_size &&
+        (fields.size > kMaxChunkBytes || (fields.compression == "none" && fields.size != data_bytes))) {
+      throw InputError(where + "a chunk announcing " + std::to_string(fields.size) + " bytes uncompressed from " +
                        std::to_string(data_bytes) + " bytes of data");
     }
-    if (chunk) chunk_starts.push_back(at);
+    if (chunk || fields.op == kIndexDataOp) {
+      // librosbag reads the records inside a chunk, where its index data
+      // says they start, with lengths as unchecked as the file's.
+      data.resize(data_bytes);
+      in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data_bytes));
+      if (chunk) {
+        if (!fields.has_size) throw InputError(where + "a chunk without its uncompressed size");
+        chunk_records = WalkChunk(Uncompress(std::move(data), fields, where), where);
+        chunk_starts.push_back(at);
+      } else {
+        if (data_bytes % kIndexEntryBytes != 0) throw InputError(where + "index data of a partial entry");
+        for (std::uint64_t e = 0; e < data_bytes; e += kIndexEntryBytes) {
+          const std::uint32_t offset = U32(&data[e + 8]);
+          if (!std::binary_search(chunk_records.begin(), chunk_records.end(), offset)) {
+            throw InputError(where + "index data naming offset " + std::to_string(offset) +
+                             ", not the start of a record in the chunk before it");
+          }
+        }
+      }
+    } else {
+      in.seekg(static_cast<std::streamoff>(data_bytes), std::ios::cur);
+    }
     // A bag header's index_pos of 0 marks a bag never indexed (librosbag says so).
-    if (has_position && op == kBagHeaderOp && position != 0) pointers.push_back({at, position, false, "index_pos"});
-    if (has_position && op == kChunkInfoOp) pointers.push_back({at, position, true, "chunk_pos"});
-    in.seekg(static_cast<std::streamoff>(data_bytes), std::ios::cur);
+    if (fields.has_position && fields.op == kBagHeaderOp && fields.position != 0) {
+      pointers.push_back({at, fields.position, false, "index_pos"});
+    }
+    if (fields.has_position && fields.op == kChunkInfoOp) pointers.push_back({at, fields.position, true, "chunk_pos"});
     at += 8 + header_bytes + data_bytes;
   }
   // librosbag reads a record wherever these point: each must be one of the

@@ -283,6 +283,23 @@ TEST(RosbagReaderTest, PositionsThatAreNoRecordStartAreErrors) {
     }
   }
 }
+
+// Found by fuzzing: librosbag reads the records inside a chunk with their
+// lengths unchecked (a heap overflow in ros::Header::parse); they are
+// walked like the file's before it opens the bag.
+TEST(RosbagReaderTest, ARecordRunningPastItsChunkIsAnError) {
+  const fs::path file =
+      fs::path(UNIMAP_SOURCE_DIR) / "tests/fuzz/regressions/rosbag/overflow-message-header-inside-a-chunk.bag";
+  try {
+    RosbagReader reader(file);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("record at byte 9376: the chunk's record at offset 2705: a header running "
+                                         "past the chunk"),
+              std::string::npos)
+        << e.what();
+  }
+}
 #endif
 
 }  // namespace
