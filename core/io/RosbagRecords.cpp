@@ -25,6 +25,7 @@ constexpr std::uint8_t kBagHeaderOp = 0x03;
 constexpr std::uint8_t kIndexDataOp = 0x04;
 constexpr std::uint8_t kChunkOp = 0x05;
 constexpr std::uint8_t kChunkInfoOp = 0x06;
+constexpr std::uint8_t kConnectionOp = 0x07;    // its data is a header too (topic, type, md5sum, definition)
 constexpr std::uint64_t kIndexEntryBytes = 12;  // u32 secs, u32 nsecs, u32 offset into the chunk
 
 std::uint32_t U32(const unsigned char* bytes) {
@@ -83,10 +84,11 @@ std::vector<std::uint64_t> WalkChunk(const std::vector<unsigned char>& data, con
     if (size - at < 4) throw InputError(inner + "truncated length");
     const std::uint64_t header_bytes = U32(&data[at]);
     if (header_bytes > size - at - 4) throw InputError(inner + "a header running past the chunk");
-    ParseHeader(&data[at + 4], header_bytes, inner);
+    const RecordHeader fields = ParseHeader(&data[at + 4], header_bytes, inner);
     if (size - at - 4 - header_bytes < 4) throw InputError(inner + "truncated data length");
     const std::uint64_t data_bytes = U32(&data[at + 4 + header_bytes]);
     if (data_bytes > size - at - 8 - header_bytes) throw InputError(inner + "data running past the chunk");
+    if (fields.op == kConnectionOp) ParseHeader(&data[at + 8 + header_bytes], data_bytes, inner + "its connection: ");
     starts.push_back(at);
     at += 8 + header_bytes + data_bytes;
   }
@@ -172,12 +174,14 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
       throw InputError(where + "a chunk announcing " + std::to_string(fields.size) + " bytes uncompressed from " +
                        std::to_string(data_bytes) + " bytes of data");
     }
-    if (chunk || fields.op == kIndexDataOp) {
+    if (chunk || fields.op == kIndexDataOp || fields.op == kConnectionOp) {
       // librosbag reads the records inside a chunk, where its index data
       // says they start, with lengths as unchecked as the file's.
       data.resize(data_bytes);
       in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data_bytes));
-      if (chunk) {
+      if (fields.op == kConnectionOp) {
+        ParseHeader(data.data(), data_bytes, where + "its connection: ");
+      } else if (chunk) {
         if (!fields.has_size) throw InputError(where + "a chunk without its uncompressed size");
         chunk_records = WalkChunk(Uncompress(std::move(data), fields, where), where);
         chunk_starts.push_back(at);

@@ -11,7 +11,8 @@ namespace unimap::io {
 // data length and the data; and the records inside each chunk, uncompressed
 // (none, bz2, lz4) to the size it announces. Throws InputError "<bag>:
 // record at byte B: <reason>" when a length runs past the end of the file,
-// its chunk or its header, a field has no '=', a chunk announces more than
+// its chunk or its header (a connection record's data is a header too), a
+// field has no '=', a chunk announces more than
 // 1 GiB uncompressed (or another size than it uncompresses to), an index
 // data entry names an offset that is not a record of the chunk before it,
 // or the bag header's index_pos or a chunk info's chunk_pos is not the start

@@ -284,20 +284,24 @@ TEST(RosbagReaderTest, PositionsThatAreNoRecordStartAreErrors) {
   }
 }
 
-// Found by fuzzing: librosbag reads the records inside a chunk with their
-// lengths unchecked (a heap overflow in ros::Header::parse); they are
-// walked like the file's before it opens the bag.
-TEST(RosbagReaderTest, ARecordRunningPastItsChunkIsAnError) {
-  const fs::path file =
-      fs::path(UNIMAP_SOURCE_DIR) / "tests/fuzz/regressions/rosbag/overflow-message-header-inside-a-chunk.bag";
-  try {
-    RosbagReader reader(file);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("record at byte 9376: the chunk's record at offset 2705: a header running "
-                                         "past the chunk"),
-              std::string::npos)
-        << e.what();
+// Found by fuzzing: librosbag parses the records inside a chunk, and the
+// header that is a connection record's data, with lengths unchecked (heap
+// overflows in ros::Header::parse); they are walked like the file's
+// records before it opens the bag.
+TEST(RosbagReaderTest, RecordsInsideChunksAndConnectionHeadersAreChecked) {
+  const fs::path regressions = fs::path(UNIMAP_SOURCE_DIR) / "tests/fuzz/regressions/rosbag";
+  for (const auto& [file, expected] :
+       {std::pair{"overflow-message-header-inside-a-chunk.bag",
+                  "record at byte 9376: the chunk's record at offset 0: its connection: a header field runs past its "
+                  "header"},
+        std::pair{"overflow-connection-header-data.bag",
+                  "record at byte 19351: its connection: a header field runs past its header"}}) {
+    try {
+      RosbagReader reader(regressions / file);
+      ADD_FAILURE() << file << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
   }
 }
 #endif
