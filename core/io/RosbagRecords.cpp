@@ -175,8 +175,9 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
                        std::to_string(data_bytes) + " bytes of data");
     }
     if (chunk || fields.op == kIndexDataOp || fields.op == kConnectionOp) {
-      // librosbag reads the records inside a chunk, where its index data
-      // says they start, with lengths as unchecked as the file's.
+      // librosbag parses what these hold with lengths as unchecked as the
+      // file's: the records inside a chunk (where its index data says they
+      // start) and the header that is a connection record's data.
       data.resize(data_bytes);
       in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data_bytes));
       if (fields.op == kConnectionOp) {
