@@ -228,6 +228,31 @@ class RosbagReader::Impl : public BagState {
     m.write(stream);
   }
 
+  // A message of the generated type T, deserialized from its bytes once
+  // they have been checked against T's own definition: ROS 1's deserializer
+  // sizes each array by the count it reads before it knows whether the
+  // bytes are there (a damaged LaserScan claiming 2^30 ranges allocated
+  // 4 GiB). Null when the message is not a T (its md5 differs); throws
+  // InputError naming the topic and the receive time when the message is
+  // shorter than its definition says.
+  template <class T>
+  boost::shared_ptr<T> Instantiate(const rosbag::MessageInstance& m) {
+    if (!m.isType<T>()) return nullptr;
+    static const Ros1MessageDefinition definition(ros::message_traits::DataType<T>::value(),
+                                                  ros::message_traits::Definition<T>::value());
+    ReadBytes(m);
+    try {
+      definition.Locate(buffer.data(), buffer.size(), "");
+    } catch (const InputError& e) {
+      throw InputError(m.getTopic() + " message received at " + std::to_string(m.getTime().toSec()) +
+                       " s: " + e.what());
+    }
+    auto message = boost::make_shared<T>();
+    ros::serialization::IStream in(buffer.data(), static_cast<std::uint32_t>(buffer.size()));
+    ros::serialization::deserialize(in, *message);
+    return message;
+  }
+
   // A header stamp at `path` ("" or a time field), 0 when there is none.
   double StampAt(const Ros1MessageDefinition& d, const std::string& path) const {
     if (d.TypeOf(path) != "time") return 0.0;
@@ -249,7 +274,7 @@ class RosbagReader::Impl : public BagState {
 
   // A LaserScan message, or the one inside a custom message.
   sensor_msgs::LaserScan::ConstPtr LaserOf(const rosbag::MessageInstance& m) {
-    if (laser_path.empty()) return m.instantiate<sensor_msgs::LaserScan>();
+    if (laser_path.empty()) return Instantiate<sensor_msgs::LaserScan>(m);
     ReadBytes(m);
     const Ros1MessageDefinition& d = *definitions.at(m.getTopic());
     const Ros1MessageDefinition::Span span = d.Locate(buffer.data(), buffer.size(), laser_path);
@@ -287,7 +312,7 @@ class RosbagReader::Impl : public BagState {
         return true;
       }
       case Stream::kCloud: {
-        auto cloud = m.instantiate<sensor_msgs::PointCloud2>();
+        auto cloud = Instantiate<sensor_msgs::PointCloud2>(m);
         if (!cloud) return Skip(out->topic + ": message definition differs from sensor_msgs/PointCloud2");
         const double stamp = StampOr(cloud->header.stamp, m);
         out->stamp_s = stamp;
@@ -317,7 +342,7 @@ class RosbagReader::Impl : public BagState {
         return true;
       }
       case Stream::kImu: {
-        auto imu = m.instantiate<sensor_msgs::Imu>();
+        auto imu = Instantiate<sensor_msgs::Imu>(m);
         if (!imu) return Skip(out->topic + ": message definition differs from sensor_msgs/Imu");
         ImuSample sample;
         sample.time_s = StampOr(imu->header.stamp, m);
@@ -331,7 +356,7 @@ class RosbagReader::Impl : public BagState {
         return true;
       }
       case Stream::kJoint: {
-        auto joints = m.instantiate<sensor_msgs::JointState>();
+        auto joints = Instantiate<sensor_msgs::JointState>(m);
         if (!joints) return Skip(out->topic + ": message definition differs from sensor_msgs/JointState");
         std::string reason;
         const std::optional<double> angle = JointAngle(joints->name, joints->position, options.joint_name, &reason);
@@ -345,12 +370,12 @@ class RosbagReader::Impl : public BagState {
         Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
         double time_s = 0.0;
         if (m.getDataType() == kPoseStamped) {
-          auto pose = m.instantiate<geometry_msgs::PoseStamped>();
+          auto pose = Instantiate<geometry_msgs::PoseStamped>(m);
           if (!pose) return Skip(out->topic + ": message definition differs from geometry_msgs/PoseStamped");
           time_s = StampOr(pose->header.stamp, m);
           if (!ToIsometry(pose->pose, &T)) return Skip(out->topic + ": pose with an invalid quaternion");
         } else {
-          auto odometry = m.instantiate<nav_msgs::Odometry>();
+          auto odometry = Instantiate<nav_msgs::Odometry>(m);
           if (!odometry) return Skip(out->topic + ": message definition differs from nav_msgs/Odometry");
           time_s = StampOr(odometry->header.stamp, m);
           if (!ToIsometry(odometry->pose.pose, &T)) return Skip(out->topic + ": pose with an invalid quaternion");

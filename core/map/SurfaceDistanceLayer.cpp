@@ -15,7 +15,6 @@ constexpr int kKeyOffset = 32768;  // voxel key of coordinate 0
 constexpr int kMaxKey = 65535;
 constexpr int kEdge = DistanceField::kBlockEdge;
 constexpr int kMask = kEdge - 1;
-constexpr int kShiftBlock = DistanceField::kBlockShift;
 constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();  // no occupied voxel within reach
 
 const std::array<Eigen::Vector3i, 6> kSteps = {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(-1, 0, 0),

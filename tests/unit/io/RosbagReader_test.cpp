@@ -16,6 +16,7 @@
 #include <rosbag/bag.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
+#include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
 #endif
 
@@ -302,6 +303,51 @@ TEST(RosbagReaderTest, RecordsInsideChunksAndConnectionHeadersAreChecked) {
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
+  }
+}
+
+// Found by fuzzing (regressions/rosbag/oom-laserscan-range-count.bag): ROS
+// 1's generated deserializer resizes an array to the count it reads before
+// it knows whether the bytes are there, so a LaserScan claiming 2^30 ranges
+// allocated 4 GiB. The count is patched into a bag written by librosbag.
+TEST(RosbagReaderTest, AnArrayCountPastTheMessageIsAnError) {
+  test::ScratchFolder dir;
+  const fs::path file = dir.path() / "scan.bag";
+  {
+    rosbag::Bag bag(file.string(), rosbag::bagmode::Write);
+    sensor_msgs::LaserScan scan;
+    scan.header.stamp = ros::Time(100.0);
+    scan.angle_min = -1.0f;
+    scan.angle_increment = 0.5f;
+    scan.range_max = 30.0f;
+    scan.ranges = {1.25f, 2.5f, 3.75f};
+    bag.write("/scan", scan.header.stamp, scan);
+  }
+  RosbagReader intact(file);
+  ASSERT_TRUE(intact.Next().has_value());
+
+  std::string bytes = test::ReadText(file);  // (binary-safe)
+  const std::uint32_t count = 3;
+  const float ranges[3] = {1.25f, 2.5f, 3.75f};
+  std::string pattern(4 + sizeof(ranges), '\0');
+  std::memcpy(&pattern[0], &count, 4);
+  std::memcpy(&pattern[4], ranges, sizeof(ranges));
+  const std::size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos);
+  const std::uint32_t huge = 1u << 30;
+  std::memcpy(&bytes[at], &huge, 4);
+  test::WriteText(file, bytes);
+  try {
+    RosbagReader reader(file);
+    while (reader.Next()) {
+    }
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/scan message received at 100.000000 s: sensor_msgs/LaserScan message of "),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("bytes is shorter than its definition"), std::string::npos) << e.what();
   }
 }
 #endif
