@@ -1,5 +1,8 @@
 // libFuzzer harness: an OctoMap .bt prior map through DistanceMap::LoadBt
-// (what `unimap localize --map MAP.bt` does), with a small distance box.
+// (what `unimap localize --map MAP.bt` does), with a small distance box:
+// the tree's reading and checks are what is fuzzed; a 1 m range and at most
+// 30,000 distance cells made 179 executions/s against 115 with 2 m and
+// 200,000 (most of the rest is reading the tree).
 #include <cstddef>
 #include <cstdint>
 
@@ -10,8 +13,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto& scratch = unimap::fuzz::FuzzScratch::Get();
   unimap::map::DistanceMapOptions options;
-  options.max_range_m = 2.0;
-  options.max_edt_cells = 200000;
+  options.max_range_m = 1.0;
+  options.max_edt_cells = 30000;
   try {
     auto map = unimap::map::DistanceMap::LoadBt(scratch.Write("map.bt", data, size), options, Eigen::Vector3f::Zero());
     map->WaitForUpdates();
