@@ -25,8 +25,9 @@ constexpr std::uint8_t kBagHeaderOp = 0x03;
 constexpr std::uint8_t kIndexDataOp = 0x04;
 constexpr std::uint8_t kChunkOp = 0x05;
 constexpr std::uint8_t kChunkInfoOp = 0x06;
-constexpr std::uint8_t kConnectionOp = 0x07;    // its data is a header too (topic, type, md5sum, definition)
-constexpr std::uint64_t kIndexEntryBytes = 12;  // u32 secs, u32 nsecs, u32 offset into the chunk
+constexpr std::uint8_t kConnectionOp = 0x07;       // its data is a header too (topic, type, md5sum, definition)
+constexpr std::uint64_t kIndexEntryBytes = 12;     // u32 secs, u32 nsecs, u32 offset into the chunk
+constexpr std::uint64_t kChunkInfoEntryBytes = 8;  // u32 connection, u32 its message count
 
 std::uint32_t U32(const unsigned char* bytes) {
   return static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8 |
@@ -45,6 +46,8 @@ struct RecordHeader {
   std::uint64_t size = 0;
   bool has_position = false;  // index_pos (bag header) or chunk_pos (chunk info)
   std::uint64_t position = 0;
+  bool has_count = false;  // entries of index data, connections of a chunk info
+  std::uint64_t count = 0;
 };
 
 // Parses the fields (u32 length, "name=value") of a header of n bytes.
@@ -64,6 +67,10 @@ RecordHeader ParseHeader(const unsigned char* h, std::uint64_t n, const std::str
     if (key == "size" && value.size() == 4) {
       out.size = U32(v);
       out.has_size = true;
+    }
+    if (key == "count" && value.size() == 4) {
+      out.count = U32(v);
+      out.has_count = true;
     }
     if ((key == "index_pos" || key == "chunk_pos") && value.size() == 8) {
       out.position = U64(v);
@@ -167,6 +174,17 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
     if (data_bytes > left) {
       throw InputError(where + "data of " + std::to_string(data_bytes) + " bytes, " + std::to_string(left) +
                        " bytes left in the file");
+    }
+    // librosbag reads an index data's and a chunk info's `count` entries
+    // from the file, wherever they end: past the record's data, the next
+    // "record" it reads is arbitrary bytes.
+    if (fields.op == kIndexDataOp || fields.op == kChunkInfoOp) {
+      const std::uint64_t entry = fields.op == kIndexDataOp ? kIndexEntryBytes : kChunkInfoEntryBytes;
+      if (!fields.has_count || fields.count * entry != data_bytes) {
+        throw InputError(where + (fields.op == kIndexDataOp ? "index data" : "a chunk info") + " announcing " +
+                         (fields.has_count ? std::to_string(fields.count) : std::string("no")) + " entries of " +
+                         std::to_string(entry) + " bytes in " + std::to_string(data_bytes) + " bytes of data");
+      }
     }
     const bool chunk = fields.op == kChunkOp;
     if (chunk && fields.has_size &&

@@ -285,6 +285,45 @@ TEST(RosbagReaderTest, PositionsThatAreNoRecordStartAreErrors) {
   }
 }
 
+// Found by fuzzing (regressions/rosbag/oom-index-count-past-its-data.bag):
+// librosbag reads an index data's and a chunk info's `count` entries from
+// the file, so a count larger than the record's data made it read the next
+// "record" from inside an entry and allocate the 2.3 GB length it found.
+// The first `count` field of the bag is an index data's (after the first
+// chunk), the last one a chunk info's (at the end).
+TEST(RosbagReaderTest, EntryCountsMustFillTheirRecord) {
+  test::ScratchFolder dir;
+  for (const bool last : {false, true}) {
+    const fs::path file = dir.path() / (last ? "chunk-info.bag" : "index-data.bag");
+    WriteBz2Bag(file);
+    std::string bytes = test::ReadText(file);  // (binary-safe)
+    // The field with its length (10: "count=" and a u32), not the bag
+    // header's conn_count or chunk_count.
+    const std::string field(
+        "\x0a\x00\x00\x00"
+        "count=",
+        10);
+    const std::size_t at = last ? bytes.rfind(field) : bytes.find(field);
+    ASSERT_NE(at, std::string::npos);
+    std::uint32_t count = 0;
+    std::memcpy(&count, &bytes[at + field.size()], 4);
+    const std::uint32_t more = count + 1;
+    std::memcpy(&bytes[at + field.size()], &more, 4);
+    test::WriteText(file, bytes);
+    try {
+      RosbagReader reader(file);
+      ADD_FAILURE() << file << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+      const std::string expected = std::string(last ? "a chunk info" : "index data") + " announcing " +
+                                   std::to_string(more) + " entries of " + (last ? "8" : "12") + " bytes in " +
+                                   std::to_string(count * (last ? 8 : 12)) + " bytes of data";
+      EXPECT_NE(what.find(expected), std::string::npos) << what;
+    }
+  }
+}
+
 // Found by fuzzing: librosbag parses the records inside a chunk, and the
 // header that is a connection record's data, with lengths unchecked (heap
 // overflows in ros::Header::parse); they are walked like the file's
