@@ -30,6 +30,7 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
     return Fail(why, "growth_margin_m must be finite and non-negative");
   }
   if (max_edt_cells < 1000) return Fail(why, "max_edt_cells must be at least 1000");
+  if (max_occupied_voxels < 1) return Fail(why, "max_occupied_voxels must be at least 1");
   if (!PositiveFinite(max_insert_range_m)) {
     return Fail(why, "max_insert_range_m must be positive and finite");
   }
@@ -55,6 +56,7 @@ void DistanceMapOptions::VisitFields(options::FieldVisitor& v) {
   v.SetElsewhere("follow_sensor", "the mapper (each submap's box)");
   v.Field("growth_margin_m", &growth_margin_m, "m");
   v.Field("max_edt_cells", &max_edt_cells, "count");
+  v.Field("max_occupied_voxels", &max_occupied_voxels, "count");
   v.Field("max_insert_range_m", &max_insert_range_m, "m");
   v.Field("raycast_free_space", &raycast_free_space, "");
   v.Field("clear_occupied_only", &clear_occupied_only, "");

@@ -69,18 +69,18 @@ OccupancyTree::OccupancyTree(std::unique_ptr<octomap::OcTree> tree, const Distan
   ApplySensorModel();
   if (!tracks_occupied_) return;
   // A leaf above the finest depth stands for size^3 voxels, each tracked
-  // below: refuse a tree that would expand past kMaxExpandedVoxels (a
+  // below: refuse a tree that would expand past max_occupied_voxels (a
   // damaged or hostile file: a leaf at depth 1 covers 2^45 voxels) before
   // allocating any.
+  const std::uint64_t max_voxels = options_.max_occupied_voxels;
   std::uint64_t voxels = 0;
-  ForEachOccupiedLeaf(*tree_, nullptr, [&voxels](const Eigen::Vector3i&, int size) {
+  ForEachOccupiedLeaf(*tree_, nullptr, [&voxels, max_voxels](const Eigen::Vector3i&, int size) {
     const auto edge = static_cast<std::uint64_t>(size);
-    voxels = std::min<std::uint64_t>(voxels + edge * edge * edge, kMaxExpandedVoxels + 1);
+    voxels = std::min<std::uint64_t>(voxels + edge * edge * edge, max_voxels + 1);
   });
-  if (voxels > kMaxExpandedVoxels) {
-    throw InputError("octree: its occupied leaves cover more than " + std::to_string(kMaxExpandedVoxels) +
-                     " voxels of " + std::to_string(resolution_m_) +
-                     " m (coarse occupied leaves near the root); not a surface map");
+  if (voxels > max_voxels) {
+    throw InputError("octree: its occupied leaves cover more than " + std::to_string(max_voxels) + " voxels of " +
+                     std::to_string(resolution_m_) + " m (coarse occupied leaves near the root); not a surface map");
   }
   ForEachOccupiedLeaf(*tree_, nullptr, [this](const Eigen::Vector3i& min_key, int size) {
     for (int dx = 0; dx < size; ++dx) {

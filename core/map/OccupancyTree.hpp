@@ -25,17 +25,13 @@ namespace unimap::map {
 class OccupancyTree {
  public:
   using KeySetType = std::unordered_set<std::uint64_t>;  // packed voxel keys
-  // An adopted tree's occupied leaves may cover at most this many voxels
-  // (the tracked set costs ~40 bytes each: 400 MB; the simulated scenarios'
-  // maps hold a few hundred thousand). 5e7 (2 GB) let a fuzzed tree run out
-  // of memory (tests/fuzz/regressions/bt/oom-expanded-occupied-set.bt).
-  static constexpr std::uint64_t kMaxExpandedVoxels = 10000000;
-
   // An empty tree at options.resolution_m.
   explicit OccupancyTree(const DistanceMapOptions& options);
   // Adopts tree (its resolution wins over options.resolution_m) and applies
   // the occupancy probabilities of options. Throws InputError on null or
-  // when its occupied leaves cover more than kMaxExpandedVoxels.
+  // when its occupied leaves cover more than options.max_occupied_voxels
+  // (a cap of 5e7, 2 GB, let a fuzzed tree run out of memory:
+  // tests/fuzz/regressions/bt/oom-expanded-occupied-set.bt).
   OccupancyTree(std::unique_ptr<octomap::OcTree> tree, const DistanceMapOptions& options);
   ~OccupancyTree();
   OccupancyTree(const OccupancyTree&) = delete;

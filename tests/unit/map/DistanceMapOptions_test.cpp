@@ -27,6 +27,7 @@ TEST(DistanceMapOptions, EachOutOfRangeFieldIsNamed) {
       {"recenter_fraction", [](DistanceMapOptions& o) { o.recenter_fraction = 1.5; }},
       {"growth_margin_m", [](DistanceMapOptions& o) { o.growth_margin_m = -1.0; }},
       {"max_edt_cells", [](DistanceMapOptions& o) { o.max_edt_cells = 10; }},
+      {"max_occupied_voxels", [](DistanceMapOptions& o) { o.max_occupied_voxels = 0; }},
       {"max_insert_range_m", [](DistanceMapOptions& o) { o.max_insert_range_m = -3.0; }},
       {"prob_hit", [](DistanceMapOptions& o) { o.prob_hit = 0.4; }},
       {"prob_miss", [](DistanceMapOptions& o) { o.prob_miss = 0.6; }},

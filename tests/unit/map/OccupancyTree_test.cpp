@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
+#include "unimap/Errors.hpp"
+
 namespace unimap::map {
 namespace {
 
@@ -63,6 +65,36 @@ TEST(OccupancyTree, AdoptedTreesAreClearedByRaysToo) {
     EXPECT_TRUE(IsOccupied(tree, V3(2.05f, 0.05f, 0.05f)));
     for (int i = 0; i < 8; ++i) tree.Insert({V3(4.05f, 0.05f, 0.05f)}, V3(0.05f, 0.05f, 0.05f));
     EXPECT_FALSE(IsOccupied(tree, V3(2.05f, 0.05f, 0.05f))) << occupied_only;
+  }
+}
+
+// A coarse occupied leaf stands for every voxel below it: a pruned 2x2x2
+// cube is one leaf of 8 voxels, and max_occupied_voxels counts them all
+// before any is tracked.
+TEST(OccupancyTree, AdoptedTreesCoveringMoreThanMaxOccupiedVoxelsAreRefused) {
+  for (const std::size_t max_voxels : {std::size_t{7}, std::size_t{8}}) {
+    auto octree = std::make_unique<octomap::OcTree>(0.1);
+    for (int i = 0; i < 8; ++i) {
+      const octomap::OcTreeKey key(32768 + (i & 1), 32768 + ((i >> 1) & 1), 32768 + ((i >> 2) & 1));
+      for (int hit = 0; hit < 3; ++hit) octree->updateNode(key, true);
+    }
+    octree->prune();
+    ASSERT_EQ(octree->getNumLeafNodes(), 1u);
+    DistanceMapOptions options = Options();
+    options.max_occupied_voxels = max_voxels;
+    if (max_voxels < 8) {
+      try {
+        OccupancyTree tree(std::move(octree), options);
+        ADD_FAILURE() << "no error";
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("octree: its occupied leaves cover more than 7 voxels of 0.1"),
+                  std::string::npos)
+            << e.what();
+      }
+    } else {
+      OccupancyTree tree(std::move(octree), options);
+      EXPECT_EQ(tree.OccupiedVoxelCenters().size(), 8u);
+    }
   }
 }
 
