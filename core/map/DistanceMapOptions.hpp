@@ -38,9 +38,9 @@ struct DistanceMapOptions {
                                                // empty fields) until DistanceMap::EnableDistances() (a growing submap)
   bool subvoxel_surfaces = true;               // distances are to the surface inside each occupied voxel
                                                // (mean and plane of its returns, see SurfacePoints; signed
-                                  // behind it with signed_surfaces), instead of to the voxel centre (up to half a
-                                  // voxel off); ~80 bytes per occupied voxel. Voxels without
-                                  // returns (.bt priors) keep the centre
+  // behind it with signed_surfaces), instead of to the voxel centre (up to half a
+  // voxel off); ~80 bytes per occupied voxel. Voxels without
+  // returns (.bt priors) keep the centre
   bool signed_surfaces = true;  // with subvoxel_surfaces: distances are negative directly behind
                                 // an oriented surface disk (interpolation crosses zero on it);
                                 // false: magnitudes only (see SurfacePoints)

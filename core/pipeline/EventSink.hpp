@@ -23,9 +23,12 @@ struct ScanDiagnostics {
   Eigen::Matrix<double, 6, 1> correction = Eigen::Matrix<double, 6, 1>::Zero();    // applied to the prediction
   Eigen::Matrix<double, 6, 1> predicted_sd = Eigen::Matrix<double, 6, 1>::Zero();  // prior standard deviations
   Eigen::Matrix<double, 6, 1> measured_sd = Eigen::Matrix<double, 6, 1>::Zero();   // pseudo measurement's
-  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();                          // after the update (map frame)
-  Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d::Zero();                       // after the update
-  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();                       // after the update
+  // The pseudo measurement itself: the pose error it measures against the
+  // prediction (position m, rotation rad; the innovation of the update).
+  Eigen::Matrix<double, 6, 1> innovation = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();     // after the update (map frame)
+  Eigen::Vector3d accel_bias_m_s2 = Eigen::Vector3d::Zero();  // after the update
+  Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();  // after the update
 };
 
 // The localised pose of one scan.

@@ -308,6 +308,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
       eskf_.InflateMotionCovariance(matched_scan.inflation);
       const estimation::PoseUpdateResult update = eskf_.UpdatePoseError(match.measurement.z, match.measurement.R);
       diagnostics.measured_sd = match.measurement.R.diagonal().cwiseSqrt();
+      diagnostics.innovation = match.measurement.z;
       diagnostics.mahalanobis_sq = update.mahalanobis_sq;
       if (update.applied) {
         correction = update.error_correction;

@@ -34,7 +34,7 @@ void AddRunCommand(CLI::App* app) {
   cmd->add_flag("--no-loop-closure", options->no_loop_closure, "Do not search for loop closures");
   cmd->add_flag("--trace", options->trace,
                 "Also write trace.csv: per scan, how the localiser found its pose (points, particle weights, "
-                "correction, standard deviations, velocity, IMU biases)");
+                "correction, standard deviations, velocity, IMU biases, the pseudo measurement)");
   cmd->add_flag("--plane-matching", options->plane_matching,
                 "Odometry measures each scan point only across the map surface around it (a plane fitted to "
                 "the surface voxels near it; points without one are not measured): for rotating 2D LiDARs, "

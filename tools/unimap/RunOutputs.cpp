@@ -246,7 +246,7 @@ std::string TraceHeader() {
   return "# time_s,matched,points,points_used,points_unseen,ess,mahalanobis_sq,inflation,inlier_share,"
          "corr_x,corr_y,corr_z,corr_rx,corr_ry,corr_rz,pred_sd_x,pred_sd_y,pred_sd_z,pred_sd_rx,pred_sd_ry,"
          "pred_sd_rz,meas_sd_x,meas_sd_y,meas_sd_z,meas_sd_rx,meas_sd_ry,meas_sd_rz,vx,vy,vz,bax,bay,baz,bgx,"
-         "bgy,bgz\n";
+         "bgy,bgz,innov_x,innov_y,innov_z,innov_rx,innov_ry,innov_rz\n";
 }
 
 std::string TraceLine(const pipeline::ScanPose& pose) {
@@ -273,6 +273,7 @@ std::string TraceLine(const pipeline::ScanPose& pose) {
   for (int i = 0; i < 3; ++i) add(d.velocity_m_s(i));
   for (int i = 0; i < 3; ++i) add(d.accel_bias_m_s2(i));
   for (int i = 0; i < 3; ++i) add(d.gyro_bias_rad_s(i));
+  for (int i = 0; i < 6; ++i) add(d.innovation(i));
   return line + "\n";
 }
 }  // namespace
