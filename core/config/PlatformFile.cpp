@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <system_error>
 #include <utility>
@@ -112,12 +111,41 @@ void CollectOverrides(const YAML::Node& map, const std::string& prefix, const st
   groups->pop_back();
 }
 
+// Scanners for the two number forms below (std::regex recursed once per
+// character and overflowed the stack on a 300,000-digit value).
+// Skips the digits from *i on; returns how many there were.
+std::size_t SkipDigits(const std::string& text, std::size_t* i) {
+  const std::size_t start = *i;
+  while (*i < text.size() && text[*i] >= '0' && text[*i] <= '9') ++*i;
+  return *i - start;
+}
+// [+-]?[0-9]+
+bool IsInteger(const std::string& text) {
+  std::size_t i = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
+  return SkipDigits(text, &i) > 0 && i == text.size();
+}
+// [+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?
+bool IsDecimal(const std::string& text) {
+  std::size_t i = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
+  const std::size_t whole = SkipDigits(text, &i);
+  std::size_t fraction = 0;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    fraction = SkipDigits(text, &i);
+  }
+  if (whole == 0 && fraction == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (SkipDigits(text, &i) == 0) return false;
+  }
+  return i == text.size();
+}
+
 }  // namespace
 
 ParameterValue ParseScalar(const std::string& text) {
-  static const std::regex kInteger(R"([+-]?[0-9]+)");
-  static const std::regex kDecimal(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)");
-  if (std::regex_match(text, kInteger)) {
+  if (IsInteger(text)) {
     errno = 0;
     char* end = nullptr;
     const long long whole = std::strtoll(text.c_str(), &end, 10);
@@ -126,7 +154,7 @@ ParameterValue ParseScalar(const std::string& text) {
     }
     // Too large for int64: falls through to a (finite) double.
   }
-  if (std::regex_match(text, kDecimal)) {
+  if (IsDecimal(text)) {
     errno = 0;
     char* end = nullptr;
     const double real = std::strtod(text.c_str(), &end);

@@ -65,9 +65,21 @@ TEST(ParseScalarTest, BooleansThenWords) {
   EXPECT_EQ(ParseScalar("true"), ParameterValue(true));
   EXPECT_EQ(ParseScalar("False"), ParameterValue(false));
   EXPECT_EQ(ParseScalar("TRUE"), ParameterValue(true));
-  for (const std::string word : {"cw", "yes", "1.2.3", "0x10", "nan", "inf", "12 m", ""}) {
+  for (const std::string word : {"cw", "yes", "1.2.3", "0x10", "nan",  "inf", "12 m", "",   "+",  "-",
+                                 ".",  "e5",  "1e",    "1e+",  "+.e1", "--1", "1.5.", " 1", "1 ", "1e5.0"}) {
     EXPECT_EQ(ParseScalar(word), ParameterValue(word)) << word;
   }
+}
+
+// A 300,000-digit value overflowed the stack of the std::regex that
+// recognised numbers (a crash of `unimap config`); out of a double's range
+// it stays text, which the parameter's reader then refuses by name.
+TEST(ParseScalarTest, VeryLongNumbersDoNotCrash) {
+  const std::string digits(300000, '1');
+  EXPECT_EQ(ParseScalar(digits), ParameterValue(digits));
+  EXPECT_EQ(ParseScalar("1." + std::string(300000, '0')), ParameterValue(1.0));
+  const std::string underflow = "0." + std::string(300000, '0') + "1";  // below the smallest double
+  EXPECT_EQ(ParseScalar(underflow), ParameterValue(underflow));
 }
 
 TEST(PlatformFileTest, FlattensNestedParametersWithLines) {
