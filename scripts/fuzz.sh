@@ -100,6 +100,7 @@ max_len_for() {
   case "$1" in
     platform_yaml|metadata_yaml) echo 8192 ;;
     carmen) echo 16384 ;;  # a few laser lines of each kind: 64 KB seeds made 190 executions/s
+    bt) echo 4096 ;;  # small trees (seed-small-walls.bt, 475 bytes): 15 KB trees made 56-115 executions/s, these ~1,100 with the same coverage
     *) echo 65536 ;;
   esac
 }
