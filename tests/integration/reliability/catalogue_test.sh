@@ -108,6 +108,11 @@ config)
   case_ platform_short_list "platform file: a 2-element rotation" 2 "list.yaml:5: key 'extrinsic.body_motor.rpy_deg'" \
     config --platform "$p"
   case_ platform_binary_garbage "platform file: 3000 bytes of an executable" 2 "random.yaml" config --platform "$work/random.yaml"
+  p="$work/long.yaml"
+  [ "$LIST" = 1 ] || { printf 'plugin: rotating_2d\nparameters:\n  sigma_accel_m_s2: '; head -c 300000 /dev/zero | tr '\0' 1
+    printf '\n'; } >"$p"
+  case_ platform_long_number "platform file: a 300,000-digit number" 2 \
+    "long.yaml:3: key 'sigma_accel_m_s2': expected number, got string 1111" config --platform "$p"
   ;;
 metadata)
   base_dataset 2
