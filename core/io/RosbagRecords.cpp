@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -83,9 +84,8 @@ RecordHeader ParseHeader(const unsigned char* h, std::uint64_t n, const std::str
 
 // The records inside a chunk's uncompressed data, walked as the file's are:
 // returns their starts (the offsets its index data may name).
-std::vector<std::uint64_t> WalkChunk(const std::vector<unsigned char>& data, const std::string& where) {
+std::vector<std::uint64_t> WalkChunk(const unsigned char* data, std::uint64_t size, const std::string& where) {
   std::vector<std::uint64_t> starts;
-  const std::uint64_t size = data.size();
   for (std::uint64_t at = 0; at < size;) {
     const std::string inner = where + "the chunk's record at offset " + std::to_string(at) + ": ";
     if (size - at < 4) throw InputError(inner + "truncated length");
@@ -102,21 +102,26 @@ std::vector<std::uint64_t> WalkChunk(const std::vector<unsigned char>& data, con
   return starts;
 }
 
-// A chunk's data uncompressed to its announced size.
-std::vector<unsigned char> Uncompress(std::vector<unsigned char> data, const RecordHeader& chunk,
-                                      const std::string& where) {
-  if (chunk.compression == "none") return data;
-  std::vector<unsigned char> out(chunk.size);
+// A compressed chunk's data uncompressed to its announced size, into a
+// buffer left uninitialised: its pages are touched only as bytes arrive, so
+// a damaged header announcing up to kMaxChunkBytes costs what the data
+// really holds, not a zeroed gigabyte.
+std::unique_ptr<unsigned char[]> Uncompress(std::vector<unsigned char> data, const RecordHeader& chunk,
+                                            const std::string& where) {
+  if (chunk.compression != "bz2" && chunk.compression != "lz4") {
+    throw InputError(where + "a chunk compressed as \"" + chunk.compression + "\" (none, bz2 and lz4 are read)");
+  }
+  std::unique_ptr<unsigned char[]> out(new unsigned char[chunk.size]);
   unsigned int out_bytes = static_cast<unsigned int>(chunk.size);
   int ok = 0;
   if (chunk.compression == "bz2") {
-    ok = BZ2_bzBuffToBuffDecompress(reinterpret_cast<char*>(out.data()), &out_bytes,
-                                    reinterpret_cast<char*>(data.data()), static_cast<unsigned int>(data.size()), 0,
-                                    0) == BZ_OK;
+    ok =
+        BZ2_bzBuffToBuffDecompress(reinterpret_cast<char*>(out.get()), &out_bytes, reinterpret_cast<char*>(data.data()),
+                                   static_cast<unsigned int>(data.size()), 0, 0) == BZ_OK;
 #if UNIMAP_WITH_ROSBAG
   } else if (chunk.compression == "lz4") {
     ok = roslz4_buffToBuffDecompress(reinterpret_cast<char*>(data.data()), static_cast<unsigned int>(data.size()),
-                                     reinterpret_cast<char*>(out.data()), &out_bytes) == ROSLZ4_OK;
+                                     reinterpret_cast<char*>(out.get()), &out_bytes) == ROSLZ4_OK;
 #endif
   } else {
     throw InputError(where + "a chunk compressed as \"" + chunk.compression + "\" (none, bz2 and lz4 are read)");
@@ -202,7 +207,12 @@ void CheckRosbagRecords(const std::filesystem::path& bag) {
         ParseHeader(data.data(), data_bytes, where + "its connection: ");
       } else if (chunk) {
         if (!fields.has_size) throw InputError(where + "a chunk without its uncompressed size");
-        chunk_records = WalkChunk(Uncompress(std::move(data), fields, where), where);
+        if (fields.compression == "none") {
+          chunk_records = WalkChunk(data.data(), data.size(), where);
+        } else {
+          const std::unique_ptr<unsigned char[]> uncompressed = Uncompress(std::move(data), fields, where);
+          chunk_records = WalkChunk(uncompressed.get(), fields.size, where);
+        }
         chunk_starts.push_back(at);
       } else {
         if (data_bytes % kIndexEntryBytes != 0) throw InputError(where + "index data of a partial entry");
