@@ -120,6 +120,33 @@ case $case_name in
     grep -Eq '^\| narrow_hallway \| rotating_vlp16 \| nominal \| 0\.[0-9]{3} \| ' "$work/robustness.md" ||
       fail "no measured row for the case"
     grep -q "1 cases met\|0 of 1 cases met\|1 of 1 cases met" "$work/robustness.md" || fail "no summary line" ;;
+  run_trace_windows)
+    # trace.csv carries each matched scan's pseudo measurement (innov_*, zero
+    # when none was applied); scripts/trace_windows.py counts and medians them
+    # per window: its counts must equal the matched lines of the trace.
+    ds="$work/$case_name.ds" out="$work/$case_name.run"; rm -rf "$ds" "$out"
+    code=$(run simulate --scenario "$src/configs/scenarios/narrow_hallway.yaml" --duration-s 6 --out "$ds" --quiet)
+    [ "$code" = 0 ] || fail "simulate exit $code"
+    code=$(run run --platform "$src/configs/platforms/rotating_hokuyo.yaml" --data "$ds" --out "$out" --trace --quiet \
+      --no-loop-closure); [ "$code" = 0 ] || fail "run exit $code"
+    head -1 "$out/trace.csv" | grep -q ',innov_x,innov_y,innov_z,innov_rx,innov_ry,innov_rz$' ||
+      fail "trace.csv header lacks the innov_* columns: $(head -1 "$out/trace.csv")"
+    col=$(head -1 "$out/trace.csv" | tr -d '# ' | tr ',' '\n' | grep -n '^innov_x$' | cut -d: -f1)
+    awk -F, -v c="$col" 'NR > 1 && $2 == 0 && ($c != 0 || $(c + 1) != 0) { bad = 1 } END { exit bad }' "$out/trace.csv" ||
+      fail "an unmatched scan has a pseudo measurement"
+    awk -F, -v c="$col" 'NR > 1 && $2 == 1 && $c != 0 { n++ } END { exit n < 100 }' "$out/trace.csv" ||
+      fail "fewer than 100 matched scans with a pseudo measurement"
+    command -v python3 >/dev/null || exit 0
+    python3 "$src/scripts/trace_windows.py" "$out/trace.csv" 2 0 6 innov_x vx >"$work/$case_name.out" 2>&1 ||
+      fail "trace_windows.py failed"
+    for w in 0 1 2; do
+      want=$(awk -F, -v w="$w" 'NR > 1 && $2 == 1 && int($1 / 2) == w { n++ } END { print n + 0 }' "$out/trace.csv")
+      [ "$want" -gt 0 ] || continue
+      expect "^ +$((2 * w))\.00 +$((2 * w + 2))\.00 +$want +[-+][0-9]+\.[0-9]{4} +[-+][0-9]+\.[0-9]{4}$"
+    done
+    python3 "$src/scripts/trace_windows.py" "$out/trace.csv" 2 0 6 no_such_column >"$work/$case_name.out" 2>&1 &&
+      fail "an unknown column was accepted"
+    expect "no column no_such_column in the header" ;;
   evaluate_map_quality)
     # A map alone, no ground truth: a noise-free 2 m x 2 m plane (0.05 m grid)
     # is all planar with no thickness; the same plane doubled 0.15 m apart is not.
