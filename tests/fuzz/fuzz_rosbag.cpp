@@ -18,6 +18,9 @@ namespace {
 // reader, not a dlopen / dlclose pair (and no leak scan is triggered by the
 // loader's bookkeeping): about 60 executions/s before, see
 // docs/reliability.md.
+// A function-local static: made on first use, after class_loader's own
+// statics, so it is destroyed before them at exit (a namespace-scope one
+// outlived them and corrupted the heap on exit).
 std::unique_ptr<unimap::io::RosbagReader>& KeptOpen() {
   static std::unique_ptr<unimap::io::RosbagReader> kept;
   return kept;

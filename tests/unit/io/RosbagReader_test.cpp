@@ -262,6 +262,20 @@ void ShiftPosition(const fs::path& file, const std::string& name, std::uint64_t 
   test::WriteText(file, bytes);
 }
 
+// The InputError that opening and reading `file` ends with ("" and a test
+// failure when it reads without one).
+std::string ReadError(const fs::path& file) {
+  try {
+    RosbagReader reader(file);
+    while (reader.Next()) {
+    }
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << file << ": no error";
+  return "";
+}
+
 // Found by fuzzing (regressions/rosbag/oom-index-pos-inside-a-record.bag):
 // librosbag reads a record wherever index_pos or a chunk_pos points and
 // allocates the header length it finds there.
@@ -271,17 +285,12 @@ TEST(RosbagReaderTest, PositionsThatAreNoRecordStartAreErrors) {
     const fs::path file = dir.path() / (field + ".bag");
     WriteBz2Bag(file);
     ShiftPosition(file, field, 90);
-    try {
-      RosbagReader reader(file);
-      ADD_FAILURE() << field << ": no error";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find(file.string()), std::string::npos) << what;
-      EXPECT_NE(what.find("its " + field + " "), std::string::npos) << what;
-      EXPECT_NE(what.find(field == "index_pos" ? "is not the start of a record" : "is not the start of a chunk"),
-                std::string::npos)
-          << what;
-    }
+    const std::string what = ReadError(file);
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("its " + field + " "), std::string::npos) << what;
+    EXPECT_NE(what.find(field == "index_pos" ? "is not the start of a record" : "is not the start of a chunk"),
+              std::string::npos)
+        << what;
   }
 }
 
@@ -310,17 +319,12 @@ TEST(RosbagReaderTest, EntryCountsMustFillTheirRecord) {
     const std::uint32_t more = count + 1;
     std::memcpy(&bytes[at + field.size()], &more, 4);
     test::WriteText(file, bytes);
-    try {
-      RosbagReader reader(file);
-      ADD_FAILURE() << file << ": no error";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find(file.string()), std::string::npos) << what;
-      const std::string expected = std::string(last ? "a chunk info" : "index data") + " announcing " +
-                                   std::to_string(more) + " entries of " + (last ? "8" : "12") + " bytes in " +
-                                   std::to_string(count * (last ? 8 : 12)) + " bytes of data";
-      EXPECT_NE(what.find(expected), std::string::npos) << what;
-    }
+    const std::string what = ReadError(file);
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+    const std::string expected = std::string(last ? "a chunk info" : "index data") + " announcing " +
+                                 std::to_string(more) + " entries of " + (last ? "8" : "12") + " bytes in " +
+                                 std::to_string(count * (last ? 8 : 12)) + " bytes of data";
+    EXPECT_NE(what.find(expected), std::string::npos) << what;
   }
 }
 
@@ -336,12 +340,8 @@ TEST(RosbagReaderTest, RecordsInsideChunksAndConnectionHeadersAreChecked) {
                   "header"},
         std::pair{"overflow-connection-header-data.bag",
                   "record at byte 19351: its connection: a header field runs past its header"}}) {
-    try {
-      RosbagReader reader(regressions / file);
-      ADD_FAILURE() << file << ": no error";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-    }
+    const std::string what = ReadError(regressions / file);
+    EXPECT_NE(what.find(expected), std::string::npos) << what;
   }
 }
 
@@ -376,18 +376,11 @@ TEST(RosbagReaderTest, AnArrayCountPastTheMessageIsAnError) {
   const std::uint32_t huge = 1u << 30;
   std::memcpy(&bytes[at], &huge, 4);
   test::WriteText(file, bytes);
-  try {
-    RosbagReader reader(file);
-    while (reader.Next()) {
-    }
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("/scan message received at 100.000000 s: sensor_msgs/LaserScan message of "),
-              std::string::npos)
-        << e.what();
-    EXPECT_NE(std::string(e.what()).find("bytes is shorter than its definition"), std::string::npos) << e.what();
-  }
+  const std::string what = ReadError(file);
+  EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+  EXPECT_NE(what.find("/scan message received at 100.000000 s: sensor_msgs/LaserScan message of "), std::string::npos)
+      << what;
+  EXPECT_NE(what.find("bytes is shorter than its definition"), std::string::npos) << what;
 }
 #endif
 
