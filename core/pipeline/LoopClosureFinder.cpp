@@ -5,10 +5,29 @@
 
 namespace unimap::pipeline {
 
-LoopClosureFinder::LoopClosureFinder(const LoopSearchOptions& search, const graph::LoopClosureOptions& matcher)
-    : search_(search), matcher_options_(matcher) {}
+LoopClosureFinder::LoopClosureFinder(const LoopSearchOptions& search, const graph::LoopClosureOptions& matcher,
+                                     double surface_voxel_m)
+    : search_(search), matcher_options_(matcher), inv_voxel_(1.0 / surface_voxel_m) {}
 
 void LoopClosureFinder::AddRetired(map::RetiredSubmap submap, double path_m) {
+  // Consecutive submaps share M / 2 3D scans, so most of a submap's voxels
+  // are in its predecessor's even while the sensor moves on; it is dropped
+  // only when the last kept one holds redundant_overlap of them (measured
+  // in docs/reliability.md, memory over long runs).
+  const Eigen::Isometry3f T_local_submap = submap.T_local_submap.cast<float>();
+  matching::VoxelKeySet voxels;
+  std::size_t held = 0;
+  for (const Eigen::Vector3f& p : submap.points_submap.Expand()) {
+    const std::uint64_t key = matching::VoxelKey(T_local_submap * p, inv_voxel_);
+    if (!voxels.insert(key).second) continue;
+    held += last_kept_voxels_.count(key);
+  }
+  if (!retired_.empty() && !voxels.empty() &&
+      static_cast<double>(held) >= search_.redundant_overlap * static_cast<double>(voxels.size())) {
+    ++stats_.redundant;
+    return;
+  }
+  last_kept_voxels_ = std::move(voxels);
   retired_.push_back({std::move(submap), path_m});
 }
 

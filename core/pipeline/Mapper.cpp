@@ -23,7 +23,7 @@ Mapper::Mapper(const MapperOptions& options, std::shared_ptr<PayloadPlugin> plug
     : options_(Checked(options)),
       submaps_(std::make_shared<map::SubmapManager>(options_.submaps)),
       graph_(options_.scan_sigma_position_m, options_.scan_sigma_rotation_rad),
-      finder_(options_.loop_search, options_.loop_closure),
+      finder_(options_.loop_search, options_.loop_closure, options_.submaps.map.resolution_m),
       optimizer_(options_.graph) {
   LocalizerOptions localizer_options = options_.localizer;
   localizer_options.localize_only = false;

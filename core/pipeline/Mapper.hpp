@@ -25,7 +25,7 @@ namespace unimap::pipeline {
 struct MapperStats {
   std::size_t key_scans = 0;                // 3D scans (pose-graph scan nodes)
   int submaps = 0;                          // submaps started
-  std::size_t retired_submaps = 0;          // submaps retired (kept for loop closure)
+  std::size_t retired_submaps = 0;          // retired submaps kept for loop closure (not the redundant)
   std::size_t retired_points = 0;           // surface points they keep
   std::size_t retired_bytes = 0;            // bytes those points take
   std::size_t loop_closures = 0;            // accepted loop-closure constraints

@@ -24,6 +24,9 @@ bool LoopSearchOptions::IsValid(std::string* why) const {
   if (max_candidates < 1 || max_cached_matchers < 1) {
     return Fail(why, "loop_search.max_candidates and max_cached_matchers must be >= 1");
   }
+  if (!(redundant_overlap > 0.0 && redundant_overlap <= 1.0)) {
+    return Fail(why, "loop_search.redundant_overlap must be in (0, 1]");
+  }
   return true;
 }
 
@@ -74,6 +77,7 @@ void LoopSearchOptions::VisitFields(options::FieldVisitor& v) {
   v.Field("max_candidates", &max_candidates, "count");
   v.Field("max_cached_matchers", &max_cached_matchers, "count");
   v.Field("min_path_m", &min_path_m, "m");
+  v.Field("redundant_overlap", &redundant_overlap, "fraction");
 }
 
 }  // namespace unimap::pipeline

@@ -22,6 +22,9 @@ struct LoopSearchOptions {
   int max_candidates = 2;           // nearest candidates tried per 3D scan
   int max_cached_matchers = 6;      // loop-closure matchers kept in memory (least recently used dropped)
   double min_path_m = 5.0;          // a submap is a candidate only after this much travel since it (m)
+  double redundant_overlap = 0.9;   // a retired submap with at least this share of its surface voxels in
+                                    // the last kept one's adds nothing to search: its surface is dropped
+                                    // (a slow or hovering sensor retires the same place again and again)
 
   // Every field by name, for the platform file's `mapper:` section (SettingsOverrides).
   void VisitFields(options::FieldVisitor& v);

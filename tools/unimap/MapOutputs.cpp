@@ -95,6 +95,7 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["key_scans"] = s.key_scans;
   o["submaps"] = static_cast<std::size_t>(s.submaps);
   o["retired_submaps"] = s.retired_submaps;
+  o["redundant_submaps"] = s.loop_search.redundant;
   o["retired_submap_points"] = s.retired_points;
   o["retired_submap_mib"] = static_cast<double>(s.retired_bytes) / (1024.0 * 1024.0);
   o["loop_closures"] = s.loop_closures;

@@ -1,4 +1,5 @@
 // unimap: real-time 3D mapping from any LiDAR payload (command line).
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -13,24 +14,31 @@
 
 namespace {
 
-// Keeps freed memory in the process for reuse instead of returning it to
+// Keeps freed memory in the process, in one heap, for reuse instead of returning it to
 // the system: a mapper frees and reallocates megabytes per sweep (deskewed
 // points, downsampling tables, map blocks), and glibc's defaults give them
 // back and fault them in again each time (docs/mapping.md, "Third round").
 // Process-wide, so the command line sets it; the library does not.
-void KeepFreedMemory() {
+void ConfigureAllocator() {
 #if defined(__GLIBC__)
   constexpr int kTrimThresholdBytes = 64 << 20;  // free memory kept at the top of a heap before it is returned
   constexpr int kMmapThresholdBytes = 32 << 20;  // larger blocks are mapped (and unmapped) on their own
   mallopt(M_TRIM_THRESHOLD, kTrimThresholdBytes);
   mallopt(M_MMAP_THRESHOLD, kMmapThresholdBytes);
+  // One heap for every thread: glibc otherwise gives each allocating thread
+  // (the submaps' distance-map workers, the pose-graph optimiser) a heap of
+  // its own, each keeping what it freed, so the process holds the sum of
+  // their high-water marks although they never peak together (measured in
+  // docs/reliability.md, memory over long runs). An explicit
+  // MALLOC_ARENA_MAX wins.
+  if (std::getenv("MALLOC_ARENA_MAX") == nullptr) mallopt(M_ARENA_MAX, 1);
 #endif
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  KeepFreedMemory();
+  ConfigureAllocator();
   CLI::App app{"unimap: real-time 3D mapping from any LiDAR payload (fixed 3D, rotating 3D, rotating 2D)"};
   app.set_version_flag("--version", std::string("unimap ") + unimap::kSdkVersion);
   app.require_subcommand(1);
