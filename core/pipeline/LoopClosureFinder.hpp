@@ -34,7 +34,8 @@ struct LoopSearchStats {
 // dropped). A retired submap whose surface voxels (local frame) lie mostly
 // in the last kept one's is not kept: the place is already searchable, and
 // a slow or hovering sensor would otherwise add a copy every M / 2 3D scans
-// (docs/reliability.md, memory over long runs). Not thread-safe: the Mapper calls it from one thread at a time.
+// (docs/reliability.md, memory over long runs). Not thread-safe: the Mapper
+// calls it from one thread at a time.
 class LoopClosureFinder {
  public:
   // surface_voxel_m: the submaps' voxel edge (their surface points are voxel means).

@@ -1,5 +1,6 @@
 #include "pipeline/LoopClosureFinder.hpp"
 
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -11,10 +12,10 @@ constexpr double kVoxelM = 0.1;
 
 // A wall x = 2 of 4 m x 2 m sampled at voxel centres from y = y0_m on, as
 // the retired surface of submap `id` created at origin_local.
-map::RetiredSubmap Wall(int id, const Eigen::Vector3d& origin_local, double y0_m, double length_m = 4.0) {
+map::RetiredSubmap Wall(int id, const Eigen::Vector3d& origin_local, double y0_m) {
   std::vector<Eigen::Vector3f> points_submap;
   const Eigen::Vector3f origin = origin_local.cast<float>();
-  for (double y = y0_m + 0.05; y < y0_m + length_m; y += kVoxelM) {
+  for (double y = y0_m + 0.05; y < y0_m + 4.0; y += kVoxelM) {
     for (double z = 0.05; z < 2.0; z += kVoxelM) {
       points_submap.push_back(Eigen::Vector3f(2.05f, static_cast<float>(y), static_cast<float>(z)) - origin);
     }
