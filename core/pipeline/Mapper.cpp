@@ -60,7 +60,10 @@ void Mapper::Finish() {
 
 std::vector<ScanPose> Mapper::TakePoses() {
   std::vector<ScanPose> poses = localizer_->TakePoses();
-  for (const ScanPose& p : poses) local_poses_.push_back({p.time_s, p.T_map_body.matrix().topRows<3>()});
+  for (const ScanPose& p : poses) {
+    local_poses_.push_back(
+        {p.time_s, p.T_map_body.translation(), Eigen::Quaternionf(p.T_map_body.rotation().cast<float>())});
+  }
   return poses;
 }
 
@@ -107,13 +110,15 @@ void Mapper::OnKeyScan(KeyScan&& key) {
   for (std::size_t i = 0; i < key.points_local.size(); ++i) {
     const Eigen::Vector3f& p = key.points_local[i];
     const Eigen::Vector3i cell((p / static_cast<float>(voxel_m)).array().floor().cast<int>());
-    if (held_voxels_.insert(map::SurfacePoints::Pack(cell)).second) {
+    if (held_voxels_.Insert(cell)) {
       kept.push_back(points_body[i]);
       if (intensities) kept_intensities.push_back(key.intensities[i]);
     }
   }
   stats_.key_scan_points += points_body.size();
   stats_.map_points_kept += kept.size();
+  kept.shrink_to_fit();  // held for the whole run: no spare capacity (an hour holds thousands)
+  kept_intensities.shrink_to_fit();
   key_points_body_.push_back(std::move(kept));
   key_intensities_.push_back(std::move(kept_intensities));
 
@@ -147,7 +152,8 @@ std::vector<StampedPose> Mapper::OptimizedTrajectory() const {
   out.reserve(local_poses_.size());
   for (const LocalPose& p : local_poses_) {
     Eigen::Isometry3d T_local_body = Eigen::Isometry3d::Identity();
-    T_local_body.matrix().topRows<3>() = p.T_local_body;
+    T_local_body.linear() = p.q_local_body.cast<double>().normalized().toRotationMatrix();
+    T_local_body.translation() = p.p_local_body;
     out.push_back({p.time_s, graph_.ToWorld(p.time_s, T_local_body)});
   }
   return out;

@@ -10,6 +10,7 @@
 
 #include "graph/BackgroundOptimizer.hpp"
 #include "map/SubmapManager.hpp"
+#include "matching/VoxelBlockSet.hpp"
 #include "matching/VoxelDownsampler.hpp"
 #include "pipeline/EventSink.hpp"
 #include "pipeline/Localizer.hpp"
@@ -104,15 +105,16 @@ class Mapper : public EventSink {
   graph::BackgroundOptimizer optimizer_;
   // Every scan's pose so far (local frame), kept compact: a long run holds
   // one per line scan (144,235 in an hour of the tunnel), so no diagnostics,
-  // and a deque so that growing never copies them all.
+  // 48 bytes each, and a deque so that growing never copies them all.
   struct LocalPose {
     double time_s = 0.0;
-    Eigen::Matrix<double, 3, 4> T_local_body = Eigen::Matrix<double, 3, 4>::Zero();  // [R | t], exact
+    Eigen::Vector3d p_local_body = Eigen::Vector3d::Zero();            // position, exact
+    Eigen::Quaternionf q_local_body = Eigen::Quaternionf::Identity();  // rotation, to about 1e-7 rad
   };
   std::deque<LocalPose> local_poses_;
   std::vector<std::vector<Eigen::Vector3f>> key_points_body_;  // per key scan, its new voxels only
   std::vector<std::vector<float>> key_intensities_;            // their intensities (empty: none in the input)
-  matching::VoxelKeySet held_voxels_;                          // voxels (local frame) key_points_body_ holds
+  matching::VoxelBlockSet held_voxels_;                        // voxels (local frame) key_points_body_ holds
   double path_m_ = 0.0;                                        // distance travelled by the key scans
   Eigen::Vector3d last_key_position_ = Eigen::Vector3d::Zero();
   bool any_closure_ = false;
