@@ -1,7 +1,8 @@
 // The pose-graph solve (graph::PoseGraph::Optimize) on graphs shaped like
 // the Mapper's after N key scans: a submap node every 10 key scans, each
-// key scan tied to the one before (odometry) and to the two submaps it was
-// inserted into, a loop closure every 15 key scans after the first 200.
+// key scan tied to the two submaps it was inserted into (and so, as in
+// pipeline::TrajectoryGraph, not by odometry to the one before, with which
+// it shares a submap), a loop closure every 15 key scans after the first 200.
 // Besides the time, the counter solve_peak_MiB is the resident memory the
 // solve adds at its peak (free heap pages returned and the process's
 // high-water mark reset before it, /proc/self/clear_refs), measured on the
@@ -60,7 +61,6 @@ graph::PoseGraph MapperShapedGraph(int key_scans) {
   graph::PoseGraph g;
   const graph::Matrix6d sqrt_information = graph::Matrix6d::Identity() * 10.0;
   std::vector<int> submaps;
-  int previous_key = -1;
   const auto link = [&](int from, int to, graph::ConstraintKind kind) {
     graph::PoseConstraint c;
     c.from_node = from;
@@ -77,14 +77,12 @@ graph::PoseGraph MapperShapedGraph(int key_scans) {
     Eigen::Isometry3d T = PathPose(s_m);
     T.translation() += Eigen::Vector3d(noise_m(rng), noise_m(rng), noise_m(rng));
     const int key = g.AddNode(T);
-    if (previous_key >= 0) link(previous_key, key, graph::ConstraintKind::kOdometry);
     link(submaps.back(), key, graph::ConstraintKind::kScanInSubmap);
     if (submaps.size() >= 2) link(submaps[submaps.size() - 2], key, graph::ConstraintKind::kScanInSubmap);
     if (k > 200 && k % 15 == 0) {
       const std::size_t older = static_cast<std::size_t>(k) * 7919u % (submaps.size() - 5);
       link(submaps[older], key, graph::ConstraintKind::kLoopClosure);
     }
-    previous_key = key;
   }
   return g;
 }

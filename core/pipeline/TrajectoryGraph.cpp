@@ -40,8 +40,18 @@ int TrajectoryGraph::AddKeyScan(double time_s, const Eigen::Isometry3d& T_local_
     c.kind = graph::ConstraintKind::kScanInSubmap;
     graph_.AddConstraint(c);
   }
-  // Odometry between consecutive key scans.
-  if (!key_scans_.empty()) {
+  // Odometry between consecutive key scans, only when they share no submap:
+  // otherwise their scan-in-submap constraints already hold the same
+  // relative pose (all three come from the same local-frame poses), and a
+  // third constraint per key scan would count it twice and make the solve
+  // a third larger (docs/reliability.md, memory over long runs).
+  bool share_submap = false;
+  for (const int id : insertion.submap_ids) {
+    share_submap = share_submap || std::find(previous_submap_ids_.begin(), previous_submap_ids_.end(), id) !=
+                                       previous_submap_ids_.end();
+  }
+  previous_submap_ids_ = insertion.submap_ids;
+  if (!key_scans_.empty() && !share_submap) {
     const KeyScanNode& previous = key_scans_.back();
     graph::PoseConstraint c;
     c.from_node = previous.node;

@@ -21,7 +21,8 @@ struct LoopClosure {
 // The sparse pose graph of a mapping run (docs/design.md 1.5): a node per submap
 // and per 3D scan ("key scan"), in the local odometry frame the localiser
 // works in. Constraints: each key scan in every submap it was inserted into
-// (from localisation), consecutive key scans (odometry), and loop closures.
+// (from localisation), consecutive key scans that share no submap
+// (odometry), and loop closures.
 // Node 0 (the first submap) is fixed, so the world frame is the local frame
 // at the start. Optimised poses give T_world_local, the correction of the
 // live estimate, and the world pose of every key scan.
@@ -66,6 +67,7 @@ class TrajectoryGraph {
   std::vector<KeyScanNode> key_scans_;
   std::map<int, int> submap_nodes_;              // submap id -> node
   std::vector<Eigen::Isometry3d> T_local_node_;  // as first added, per node
+  std::vector<int> previous_submap_ids_;         // the submaps the last key scan went into
   Eigen::Isometry3d T_world_local_ = Eigen::Isometry3d::Identity();
   std::size_t loop_closures_ = 0;
 };

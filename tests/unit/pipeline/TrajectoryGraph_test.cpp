@@ -33,10 +33,34 @@ TEST(TrajectoryGraphTest, WithoutOptimizationTheWorldIsTheLocalFrame) {
   graph.AddKeyScan(1.0, Pose(1, 2, 0, 0.1), Into(0, T_local_submap, true));
   graph.AddKeyScan(2.0, Pose(2, 2, 0, 0.2), Into(0, T_local_submap, false));
   EXPECT_EQ(graph.key_scan_count(), 2u);
-  EXPECT_EQ(graph.graph().NodeCount(), 3u);        // one submap, two key scans
-  EXPECT_EQ(graph.graph().ConstraintCount(), 3u);  // two scan-in-submap, one odometry
+  EXPECT_EQ(graph.graph().NodeCount(), 3u);  // one submap, two key scans
+  // Two scan-in-submap; no odometry: both key scans are in submap 0.
+  EXPECT_EQ(graph.graph().ConstraintCount(), 2u);
   EXPECT_TRUE(graph.T_world_local().isApprox(Eigen::Isometry3d::Identity()));
   EXPECT_TRUE(graph.ToWorld(1.5, Pose(1.5, 2, 0, 0.15)).isApprox(Pose(1.5, 2, 0, 0.15)));
+}
+
+TEST(TrajectoryGraphTest, OdometryLinksOnlyKeyScansWithoutACommonSubmap) {
+  TrajectoryGraph graph(0.05, 0.005);
+  const Eigen::Isometry3d T_local_a = Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d T_local_b(Eigen::Translation3d(2, 0, 0));
+  graph.AddKeyScan(1.0, Pose(1, 0, 0, 0.0), Into(0, T_local_a, true));
+  // Into submaps 0 and 1 (as the Mapper's growing and matching submaps overlap).
+  map::SubmapInsertion both = Into(1, T_local_b, true);
+  both.submap_ids.insert(both.submap_ids.begin(), 0);
+  both.T_local_submaps.insert(both.T_local_submaps.begin(), T_local_a);
+  graph.AddKeyScan(2.0, Pose(2, 0, 0, 0.1), both);
+  EXPECT_EQ(graph.graph().ConstraintCount(), 3u);  // 1 + 2 scan-in-submap, submap 0 shared
+  graph.AddKeyScan(3.0, Pose(3, 0, 0, 0.2), Into(2, Pose(3, 0, 0, 0.0), true));
+  ASSERT_EQ(graph.graph().ConstraintCount(), 5u);  // scan-in-submap 2 and odometry: nothing shared
+  const graph::PoseConstraint& odometry = graph.graph().constraints().back();
+  EXPECT_EQ(odometry.kind, graph::ConstraintKind::kOdometry);
+  EXPECT_TRUE(odometry.T_from_to.isApprox(Pose(2, 0, 0, 0.1).inverse() * Pose(3, 0, 0, 0.2), 1e-12));
+  // The shared submap carries the relative pose the odometry constraint
+  // would: T_a_key1^-1 T_a_key2 is the two key scans' local relative pose.
+  const auto& c = graph.graph().constraints();
+  EXPECT_TRUE(
+      (c[0].T_from_to.inverse() * c[1].T_from_to).isApprox(Pose(1, 0, 0, 0.0).inverse() * Pose(2, 0, 0, 0.1), 1e-12));
 }
 
 TEST(TrajectoryGraphTest, OptimizedPosesCorrectLaterPosesAndNewNodes) {
