@@ -53,7 +53,7 @@ const graph::LoopClosureMatcher& LoopClosureFinder::Matcher(std::size_t index) {
   ++stats_.matchers_built;
   // The least recently used one goes before the new one is built: the
   // cache never holds more than max_cached_matchers (a matcher is 3-9 MiB).
-  while (cache_.size() >= static_cast<std::size_t>(search_.max_cached_matchers)) cache_.pop_back();
+  while (!cache_.empty() && cache_.size() >= static_cast<std::size_t>(search_.max_cached_matchers)) cache_.pop_back();
   cache_.emplace_front(index, std::make_unique<graph::LoopClosureMatcher>(retired_[index].submap.points_submap.Expand(),
                                                                           matcher_options_));
   return *cache_.front().second;

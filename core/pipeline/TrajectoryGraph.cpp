@@ -44,7 +44,7 @@ int TrajectoryGraph::AddKeyScan(double time_s, const Eigen::Isometry3d& T_local_
   // otherwise their scan-in-submap constraints already hold the same
   // relative pose (all three come from the same local-frame poses), and a
   // third constraint per key scan would count it twice and make the solve
-  // a third larger (docs/reliability.md, memory over long runs).
+  // half as large again (docs/reliability.md, memory over long runs).
   bool share_submap = false;
   for (const int id : insertion.submap_ids) {
     share_submap = share_submap || std::find(previous_submap_ids_.begin(), previous_submap_ids_.end(), id) !=
