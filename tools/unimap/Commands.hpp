@@ -22,6 +22,8 @@ void AddLocalizeCommand(CLI::App* app);
 void AddBenchCommand(CLI::App* app);
 // `unimap report RUN_DIR`: the run folder's report.html, rebuilt from its outputs.
 void AddReportCommand(CLI::App* app);
+// `unimap calibrate`: a rig's LiDAR extrinsic from its own map; writes a platform file.
+void AddCalibrateCommand(CLI::App* app);
 // `unimap demo`: simulate the paper's tunnel, map it, compare with the paper.
 void AddDemoCommand(CLI::App* app);
 

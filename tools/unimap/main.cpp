@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   unimap::cli::AddBenchCommand(&app);
   unimap::cli::AddDemoCommand(&app);
   unimap::cli::AddReportCommand(&app);
+  unimap::cli::AddCalibrateCommand(&app);
   unimap::cli::SetCommandLine(argc, argv);
   try {
     app.parse(argc, argv);

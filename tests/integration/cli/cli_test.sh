@@ -22,7 +22,7 @@ case $case_name in
   help_lists_subcommands)
     code=$(run --help); [ "$code" = 0 ] || fail "exit $code"
     listed=$(sed -n '/^Subcommands:/,$p' "$work/$case_name.out" | grep -E '^  [a-z]' | awk '{print $1}' | sort | tr '\n' ' ')
-    expected="bench config convert demo evaluate localize plugins report run simulate "
+    expected="bench calibrate config convert demo evaluate localize plugins report run simulate "
     [ "$listed" = "$expected" ] || fail "listed subcommands '$listed', expected '$expected'"
     for sub in $listed; do
       "$exe" "$sub" --help >"$work/$case_name.$sub.out" 2>&1 || fail "'$sub --help' failed"

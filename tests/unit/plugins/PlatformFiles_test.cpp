@@ -106,9 +106,10 @@ TEST(PlatformFilesTest, DifferOnlyInPluginPaperParametersAndExtrinsics) {
 }
 
 TEST(PlatformFilesTest, StartWithACommentNamingTheRig) {
-  const std::map<std::string, std::string> rig = {{"fixed_vlp16.yaml", "VLP-16"},     {"rotating_vlp16.yaml", "VLP-16"},
-                                                  {"rotating_hokuyo.yaml", "Hokuyo"}, {"kitti_hdl64.yaml", "HDL-64E"},
-                                                  {"ouster_os1_64.yaml", "OS1-64"},   {"livox_avia.yaml", "Livox"}};
+  const std::map<std::string, std::string> rig = {
+      {"fixed_vlp16.yaml", "VLP-16"},      {"rotating_vlp16.yaml", "VLP-16"}, {"rotating_hokuyo.yaml", "Hokuyo"},
+      {"kitti_hdl64.yaml", "HDL-64E"},     {"ouster_os1_64.yaml", "OS1-64"},  {"livox_avia.yaml", "Livox"},
+      {"tilting_urg04lx.yaml", "URG-04LX"}};
   for (const auto& name : PlatformFileNames()) {
     std::ifstream in(PlatformDir() / name);
     std::string first_line;
