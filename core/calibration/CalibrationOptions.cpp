@@ -17,7 +17,8 @@ bool CalibrationOptions::IsValid(std::string* why) const {
   if (max_measured < 1) return Fail(why, "max_measured must be >= 1");
   if (!(max_plane_sigmas > 0.0)) return Fail(why, "max_plane_sigmas must be > 0");
   if (!(huber_sigmas > 0.0)) return Fail(why, "huber_sigmas must be > 0");
-  if (!(min_view_angle_deg >= 0.0 && min_view_angle_deg < 180.0)) return Fail(why, "min_view_angle_deg must be in [0, 180)");
+  if (!(min_view_angle_deg >= 0.0 && min_view_angle_deg < 180.0))
+    return Fail(why, "min_view_angle_deg must be in [0, 180)");
   if (!(min_view_distance_m >= 0.0)) return Fail(why, "min_view_distance_m must be >= 0");
   if (!(planar_ratio > 0.0 && planar_ratio < 1.0)) return Fail(why, "planar_ratio must be in (0, 1)");
   if (!(min_spread_ratio >= 0.0 && min_spread_ratio < 1.0)) return Fail(why, "min_spread_ratio must be in [0, 1)");

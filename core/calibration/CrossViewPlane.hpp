@@ -23,7 +23,7 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 class CrossViewPlane {
  public:
   struct Member {
-    Eigen::Vector3d p_lidar = Eigen::Vector3d::Zero();                            // the return, LiDAR frame
+    Eigen::Vector3d p_lidar = Eigen::Vector3d::Zero();                          // the return, LiDAR frame
     Eigen::Isometry3d T_world_lidar_corrected = Eigen::Isometry3d::Identity();  // T_world_lidar X
   };
   // measured: at least one; plane: at least three.
@@ -51,7 +51,7 @@ class CrossViewPlane {
   std::vector<Member> measured_;
   std::vector<Member> plane_;
   Eigen::Vector3d normal_ = Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d in_plane_[2];         // the plane's other eigenvectors
+  Eigen::Vector3d in_plane_[2];           // the plane's other eigenvectors
   double in_plane_variance_[2] = {0, 0};  // and their eigenvalues (m^2)
   double across_variance_ = 0.0;          // the smallest eigenvalue (m^2)
 };

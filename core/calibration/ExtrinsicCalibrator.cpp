@@ -47,7 +47,8 @@ std::vector<CrossViewPlane> Planes(const std::vector<CalibrationReturn>& returns
   const auto members = [&](const std::vector<std::uint32_t>& indices) {
     std::vector<CrossViewPlane::Member> m;
     m.reserve(indices.size());
-    for (const std::uint32_t k : indices) m.push_back({returns[k].p_lidar.cast<double>(), WorldFromLidar(returns[k]) * X});
+    for (const std::uint32_t k : indices)
+      m.push_back({returns[k].p_lidar.cast<double>(), WorldFromLidar(returns[k]) * X});
     return m;
   };
   std::vector<CrossViewPlane> planes;
@@ -224,8 +225,8 @@ CalibrationResult ExtrinsicCalibrator::Calibrate(const std::vector<CalibrationRe
         std::ostringstream why;
         why << "the views agree best " << (total.head<3>() * 1000.0).transpose() << " mm and "
             << (total.tail<3>() / kDegToRad).transpose() << " deg (rotation vector) from the platform's extrinsic, "
-            << "beyond " << o.max_correction_sigmas << " times the prior's " << o.prior_sigma_translation_m
-            << " m / " << o.prior_sigma_rotation_deg << " deg on some axis: the data do not determine the "
+            << "beyond " << o.max_correction_sigmas << " times the prior's " << o.prior_sigma_translation_m << " m / "
+            << o.prior_sigma_rotation_deg << " deg on some axis: the data do not determine the "
             << "extrinsic near the platform's (a map folded onto one plane agrees with itself everywhere)";
         result.failure = why.str();
         return result;

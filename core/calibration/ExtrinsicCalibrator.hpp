@@ -16,32 +16,32 @@ namespace unimap::calibration {
 // when it did, by the platform's extrinsic (T_world_lidar at the firing time:
 // the body's pose, times T_body_lidar of the payload's model).
 struct CalibrationReturn {
-  Eigen::Vector3f p_lidar = Eigen::Vector3f::Zero();                 // LiDAR frame (m)
+  Eigen::Vector3f p_lidar = Eigen::Vector3f::Zero();                  // LiDAR frame (m)
   Eigen::Quaternionf q_world_lidar = Eigen::Quaternionf::Identity();  // T_world_lidar's rotation
-  Eigen::Vector3f t_world_lidar = Eigen::Vector3f::Zero();           // ... and translation (m)
-  std::uint32_t scan = 0;                                            // the scan it belongs to (ordered by time)
+  Eigen::Vector3f t_world_lidar = Eigen::Vector3f::Zero();            // ... and translation (m)
+  std::uint32_t scan = 0;                                             // the scan it belongs to (ordered by time)
 };
 
 // What ExtrinsicCalibrator found. Six-vectors are [translation x y z (m),
 // rotation x y z (rad)] of the correction, in the LiDAR frame.
 struct CalibrationResult {
-  bool ok = false;       // false: no planar neighbourhood was seen from two views (failure says why)
-  std::string failure;   // empty when ok
+  bool ok = false;      // false: no planar neighbourhood was seen from two views (failure says why)
+  std::string failure;  // empty when ok
   // The correction X: the LiDAR's pose in the body is T_body_lidar X, so a
   // payload whose extrinsic ends with T_*_lidar (T_motor_lidar, T_body_lidar)
   // replaces it by T_*_lidar X.
   Eigen::Isometry3d T_lidar_corrected = Eigen::Isometry3d::Identity();
-  Matrix6d covariance = Matrix6d::Zero();   // of the correction (data and the weak prior)
+  Matrix6d covariance = Matrix6d::Zero();         // of the correction (data and the weak prior)
   Vector6d information_ratio = Vector6d::Zero();  // data / prior information per direction below, ascending
   Matrix6d directions = Matrix6d::Identity();     // columns: those directions (unit, in prior-sigma units)
-  int observable = 0;                      // directions with information_ratio >= min_information_ratio
-  std::size_t neighbourhoods = 0;          // planes seen from another view, in the last round
-  std::size_t residuals = 0;               // ... and the returns measured against them
-  double rms_start_m = 0.0;                // their RMS distance from those planes before the first step (m)
-  double rms_end_m = 0.0;                  // ... and at the correction (m)
-  int rounds = 0;                          // neighbourhoods chosen
-  int iterations = 0;                      // Newton steps in all
-  bool converged = false;                  // the last round's steps ended within the tolerances
+  int observable = 0;                             // directions with information_ratio >= min_information_ratio
+  std::size_t neighbourhoods = 0;                 // planes seen from another view, in the last round
+  std::size_t residuals = 0;                      // ... and the returns measured against them
+  double rms_start_m = 0.0;                       // their RMS distance from those planes before the first step (m)
+  double rms_end_m = 0.0;                         // ... and at the correction (m)
+  int rounds = 0;                                 // neighbourhoods chosen
+  int iterations = 0;                             // Newton steps in all
+  bool converged = false;                         // the last round's steps ended within the tolerances
 };
 
 // Finds the LiDAR extrinsic with which the views of a rig's map agree: each

@@ -13,7 +13,8 @@ namespace unimap {
 // plugin, parameters and mapper settings (keys written dotted, one per line,
 // in the order given; numbers with enough digits to round-trip). comment:
 // lines put first as YAML comments ("# " added to each).
-UNIMAP_CORE_API std::string WritePlatformYaml(const std::string& plugin, const std::vector<ParameterOverride>& parameters,
+UNIMAP_CORE_API std::string WritePlatformYaml(const std::string& plugin,
+                                              const std::vector<ParameterOverride>& parameters,
                                               const std::vector<ParameterOverride>& mapper_settings,
                                               const std::string& comment);
 

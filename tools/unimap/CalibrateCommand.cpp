@@ -15,6 +15,7 @@
 #include "config/PlatformFileWriter.hpp"
 #include "eval/AtomicFile.hpp"
 #include "eval/MapQuality.hpp"
+#include "io/PlyWriter.hpp"
 #include "io/TumTrajectory.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Extrinsic.hpp"
@@ -30,6 +31,7 @@ struct CalibrateOptions {
   std::string data;
   std::string out_file;
   std::string trajectory_file;
+  std::string maps_dir;
   bool static_body = false;
   double max_duration_s = 0.0;
   calibration::CalibrationOptions calibration;
@@ -65,8 +67,8 @@ Extrinsic FromIsometry(const Eigen::Isometry3d& T) {
 
 std::string Vec(const Eigen::Vector3d& v, double scale, int digits) {
   std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << '[' << v.x() * scale << ", " << v.y() * scale << ", "
-    << v.z() * scale << ']';
+  o << std::fixed << std::setprecision(digits) << '[' << v.x() * scale << ", " << v.y() * scale << ", " << v.z() * scale
+    << ']';
   return o.str();
 }
 
@@ -90,7 +92,16 @@ int RunCalibrate(const CalibrateOptions& options) {
     if (input.scans_outside > 0) {
       std::cout << "  skipped: " << input.scans_outside << " scans (first: " << input.first_skip << ")\n";
     }
-    const calibration::CalibrationResult r = calibration::ExtrinsicCalibrator(options.calibration).Calibrate(input.returns);
+    const calibration::CalibrationResult r =
+        calibration::ExtrinsicCalibrator(options.calibration).Calibrate(input.returns);
+    const auto write_map = [&](const char* name, const Eigen::Isometry3d& X) {
+      if (options.maps_dir.empty()) return;
+      std::filesystem::create_directories(options.maps_dir);
+      const std::filesystem::path file = std::filesystem::path(options.maps_dir) / name;
+      io::WritePly(file, calibration::ExtrinsicCalibrator::Assemble(input.returns, X));
+      std::cout << "wrote " << file.string() << '\n';
+    };
+    write_map("uncalibrated.ply", Eigen::Isometry3d::Identity());
     if (!r.ok) {
       std::cerr << "error: " << options.data << ": cannot calibrate: " << r.failure << '\n';
       return 1;
@@ -112,8 +123,8 @@ int RunCalibrate(const CalibrateOptions& options) {
            << "directions estimated: " << r.observable << " of 6 (the others keep the platform's values)\n"
            << "standard deviation (LiDAR frame): translation_mm " << Vec(sd.head<3>(), 1000, 1) << ", rotation_deg "
            << Vec(sd.tail<3>(), kRadToDeg, 3) << '\n'
-           << "distance between the views' surfaces (RMS): " << std::setprecision(4) << r.rms_start_m * 1000
-           << " -> " << r.rms_end_m * 1000 << " mm; mean plane variance " << q0.mean_plane_variance_m2 << " -> "
+           << "distance between the views' surfaces (RMS): " << std::setprecision(4) << r.rms_start_m * 1000 << " -> "
+           << r.rms_end_m * 1000 << " mm; mean plane variance " << q0.mean_plane_variance_m2 << " -> "
            << q1.mean_plane_variance_m2 << " m^2, mean map entropy " << q0.mean_map_entropy << " -> "
            << q1.mean_map_entropy << (r.converged ? "" : "\n(not converged: the last round still moved it)");
     std::cout << report.str() << '\n';
@@ -133,9 +144,10 @@ int RunCalibrate(const CalibrateOptions& options) {
     const auto list = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
     parameters.push_back({key + ".translation_m", list(after.translation_m), 0});
     parameters.push_back({key + ".rpy_deg", list(after.rpy_deg), 0});
-    eval::WriteFileAtomically(options.out_file, WritePlatformYaml(platform.plugin_name, parameters,
-                                                                  platform.mapper_settings, report.str()));
+    eval::WriteFileAtomically(
+        options.out_file, WritePlatformYaml(platform.plugin_name, parameters, platform.mapper_settings, report.str()));
     std::cout << "wrote " << options.out_file << '\n';
+    write_map("calibrated.ply", r.T_lidar_corrected);
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';
@@ -162,6 +174,9 @@ void AddCalibrateCommand(CLI::App* app) {
                   "The body's poses (TUM), e.g. trajectory.tum of a `unimap run` of the same data")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--static", options->static_body, "The body stood still (a scanner on a stand)");
+  cmd->add_option("--maps-out", options->maps_dir,
+                  "Also write every return placed with the platform's extrinsic (DIR/uncalibrated.ply) and with the "
+                  "calibrated one (DIR/calibrated.ply), to compare in a viewer");
   cmd->add_option("--max-duration-s", options->max_duration_s, "Use only this much data (s)")->check(FinitePositive());
   cmd->add_option("--sigma-m", options->calibration.sigma_m, "The returns' noise across a surface (m)")
       ->check(FinitePositive())

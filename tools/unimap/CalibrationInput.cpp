@@ -1,7 +1,9 @@
 #include "CalibrationInput.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <optional>
+#include <utility>
 #include <variant>
 
 #include "eval/TrajectoryAssociation.hpp"
@@ -28,13 +30,50 @@ std::optional<Eigen::Isometry3d> BodyPoseAt(const std::vector<StampedPose>& traj
 CalibrationInput ReadCalibrationInput(io::DatasetReader& reader, const PayloadPlugin& plugin,
                                       const std::vector<StampedPose>& trajectory, double max_duration_s) {
   CalibrationInput input;
-  std::vector<RawScan> scans;
   EncoderTrack encoder;
+  const MotionQuery at_rest = [](double) { return Eigen::Isometry3d::Identity(); };
+  // Scans wait here until the encoder covers them (a scan needs the samples
+  // around its last firing), then are placed and dropped: only the returns
+  // are kept.
+  std::deque<std::pair<std::uint32_t, RawScan>> pending;
+  const auto place = [&](std::uint32_t index, const RawScan& scan) {
+    try {
+      const BodyScan body = plugin.Deskew(scan, encoder, at_rest);
+      std::vector<calibration::CalibrationReturn> placed;
+      placed.reserve(body.points.size());
+      for (const Point& point : body.points) {
+        const std::optional<Eigen::Isometry3d> T_world_body = BodyPoseAt(trajectory, point.time_s);
+        if (!T_world_body)
+          throw InputError("a return at " + std::to_string(point.time_s) + " s is outside the trajectory");
+        const Eigen::Isometry3d T_body_lidar = plugin.BodyFromLidarAt(encoder, point.time_s);
+        const Eigen::Isometry3d T_world_lidar = *T_world_body * T_body_lidar;
+        calibration::CalibrationReturn r;
+        r.p_lidar = (T_body_lidar.inverse() * point.position_m).cast<float>();
+        r.q_world_lidar = Eigen::Quaterniond(T_world_lidar.linear()).cast<float>();
+        r.t_world_lidar = T_world_lidar.translation().cast<float>();
+        r.scan = index;
+        placed.push_back(r);
+      }
+      input.returns.insert(input.returns.end(), placed.begin(), placed.end());
+      ++input.scans_used;
+    } catch (const InputError& e) {
+      if (input.first_skip.empty()) input.first_skip = "scan " + std::to_string(index) + ": " + e.what();
+      ++input.scans_outside;
+    }
+  };
+  const auto place_covered = [&] {
+    while (!pending.empty() &&
+           (!plugin.UsesEncoder() || (!encoder.empty() && encoder.end_time_s() > pending.front().second.end_time_s))) {
+      place(pending.front().first, pending.front().second);
+      pending.pop_front();
+    }
+  };
   double first_end = 0.0;
   while (const std::optional<io::DatasetEvent> event = reader.NextEvent()) {
     if (const auto* sample = std::get_if<EncoderSample>(&*event)) {
       encoder.Append(*sample);
       ++input.encoder_samples;
+      place_covered();
       continue;
     }
     const auto* record = std::get_if<io::ScanRecord>(&*event);
@@ -42,38 +81,15 @@ CalibrationInput ReadCalibrationInput(io::DatasetReader& reader, const PayloadPl
     const double end = io::ScanEndTime(*record);
     if (input.scans == 0) first_end = end;
     if (max_duration_s > 0.0 && end - first_end > max_duration_s) break;
-    ++input.scans;
+    const auto index = static_cast<std::uint32_t>(input.scans++);
     if (const auto* line = std::get_if<LineScan>(record)) {
-      scans.push_back(LineScanToRawScan(*line).scan);
+      pending.emplace_back(index, LineScanToRawScan(*line).scan);
     } else {
-      scans.push_back(std::get<RawScan>(*record));
+      pending.emplace_back(index, std::get<RawScan>(*record));
     }
+    place_covered();
   }
-  const MotionQuery at_rest = [](double) { return Eigen::Isometry3d::Identity(); };
-  for (std::size_t k = 0; k < scans.size(); ++k) {
-    try {
-      const BodyScan body = plugin.Deskew(scans[k], encoder, at_rest);
-      std::vector<calibration::CalibrationReturn> placed;
-      placed.reserve(body.points.size());
-      for (const Point& point : body.points) {
-        const std::optional<Eigen::Isometry3d> T_world_body = BodyPoseAt(trajectory, point.time_s);
-        if (!T_world_body) throw InputError("a return at " + std::to_string(point.time_s) + " s is outside the trajectory");
-        const Eigen::Isometry3d T_body_lidar = plugin.BodyFromLidarAt(encoder, point.time_s);
-        const Eigen::Isometry3d T_world_lidar = *T_world_body * T_body_lidar;
-        calibration::CalibrationReturn r;
-        r.p_lidar = (T_body_lidar.inverse() * point.position_m).cast<float>();
-        r.q_world_lidar = Eigen::Quaterniond(T_world_lidar.linear()).cast<float>();
-        r.t_world_lidar = T_world_lidar.translation().cast<float>();
-        r.scan = static_cast<std::uint32_t>(k);
-        placed.push_back(r);
-      }
-      input.returns.insert(input.returns.end(), placed.begin(), placed.end());
-      ++input.scans_used;
-    } catch (const InputError& e) {
-      if (input.first_skip.empty()) input.first_skip = "scan " + std::to_string(k) + ": " + e.what();
-      ++input.scans_outside;
-    }
-  }
+  for (const auto& [index, scan] : pending) place(index, scan);  // the encoder ends before them: skipped
   return input;
 }
 

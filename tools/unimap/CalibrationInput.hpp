@@ -15,15 +15,16 @@ namespace unimap::cli {
 
 struct CalibrationInput {
   std::vector<calibration::CalibrationReturn> returns;
-  std::size_t scans = 0;                  // scans read
-  std::size_t scans_used = 0;             // ... placed (their returns are in `returns`)
-  std::size_t scans_outside = 0;          // ... not placed: outside the encoder's or the trajectory's span
-  std::size_t encoder_samples = 0;        // encoder samples read
-  std::string first_skip;                 // why the first scan not placed was not (empty: none)
+  std::size_t scans = 0;            // scans read
+  std::size_t scans_used = 0;       // ... placed (their returns are in `returns`)
+  std::size_t scans_outside = 0;    // ... not placed: outside the encoder's or the trajectory's span
+  std::size_t encoder_samples = 0;  // encoder samples read
+  std::string first_skip;           // why the first scan not placed was not (empty: none)
 };
 
 // Reads the dataset's scans (those ending within max_duration_s of the first;
-// <= 0: all) and encoder samples, then places each scan's returns: the plugin
+// <= 0: all) and encoder samples, and places each scan's returns once the
+// encoder covers it (only the returns are kept, 48 bytes each): the plugin
 // deskews it as for a body at rest, which gives each return in the body
 // frame at its firing time t; its LiDAR-frame position is
 // T_body_lidar(t)^-1 times that and T_world_lidar = T_world_body(t)

@@ -123,6 +123,33 @@ TEST(ExtrinsicCalibrator, RecoversARotatingRigsExtrinsicFromAMovingBody) {
   EXPECT_LT(r.rms_end_m, 0.5 * r.rms_start_m);
 }
 
+TEST(ExtrinsicCalibrator, RecoversANoddingRigsExtrinsicFromAMovingBody) {
+  // A level 270 deg scanner nodding +-40 deg about the body's y (the motor
+  // frame turned so that its z is the body's y, as in tilting_urg04lx.yaml)
+  // on a body walking across the room: the same solver, another motor.
+  Vector6d truth, platform;
+  truth << 0.03, -0.02, 0.06, 90.0, 0.0, 0.0;   // motor_lidar: the LiDAR level at angle 0
+  platform << 0.0, 0.0, 0.03, 88.5, 1.0, -1.0;  // 3 cm and 1-1.5 deg off
+  std::vector<double> motor;
+  std::vector<Eigen::Isometry3d> body;
+  const Eigen::Isometry3d body_motor(Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitX()));
+  for (int k = 0; k < 1200; ++k) {
+    const double s = k / 1200.0;
+    motor.push_back(40.0 * std::sin(2.0 * M_PI * k / 100.0));  // 12 nods
+    body.push_back(Eigen::Translation3d(-1.5 + 3.0 * s, -1.0 + 1.5 * s, 0.1 * std::sin(4.0 * s)) *
+                   Eigen::AngleAxisd(0.4 * M_PI * s, Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(8.0 * kDeg * std::sin(9.0 * s), Eigen::Vector3d::UnitX()) * body_motor);
+  }
+  const std::vector<CalibrationReturn> returns = Rig(truth, platform, motor, Eigen::Vector3d::UnitZ(), 270.0, body);
+  const CalibrationResult r = ExtrinsicCalibrator().Calibrate(returns);
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.observable, 6) << Describe(r);
+  const Eigen::Isometry3d error = MotorLidar(truth).inverse() * MotorLidar(platform) * r.T_lidar_corrected;
+  EXPECT_LT(error.translation().norm(), 0.005) << error.translation().transpose();
+  EXPECT_LT(Eigen::AngleAxisd(error.linear()).angle() / kDeg, 0.2);
+}
+
 // The correction's error against the truth as [translation (m), rotation
 // vector (deg)], in the LiDAR frame.
 Vector6d ErrorOf(const Vector6d& truth, const Vector6d& platform, const Eigen::Isometry3d& correction) {
@@ -150,7 +177,8 @@ TEST(ExtrinsicCalibrator, EstimatesOnlyWhatAStandingRotatingRigObserves) {
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_TRUE(r.converged);
   EXPECT_EQ(r.observable, 1) << Describe(r);
-  EXPECT_GT(std::abs(r.directions(5, 5)), 0.99) << "the observed direction is not the rotation about z: " << Describe(r);
+  EXPECT_GT(std::abs(r.directions(5, 5)), 0.99)
+      << "the observed direction is not the rotation about z: " << Describe(r);
   const Vector6d before = ErrorOf(truth, platform, Eigen::Isometry3d::Identity());
   const Vector6d after = ErrorOf(truth, platform, r.T_lidar_corrected);
   EXPECT_GT(std::abs(before(5)), 1.0);
