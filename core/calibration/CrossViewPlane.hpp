@@ -4,10 +4,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace unimap::calibration {
+#include "calibration/LidarCorrection.hpp"
+#include "calibration/PlaneFit.hpp"
 
-using Vector6d = Eigen::Matrix<double, 6, 1>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
+namespace unimap::calibration {
 
 // A surface patch seen from two views, and how far the returns of one view
 // lie from the plane of the other's, as a function of a step
@@ -48,12 +48,14 @@ class CrossViewPlane {
   Matrix6d NormalNoiseInformation(double sigma_m) const;
 
  private:
+  // The plane fitted to its returns moved by D.
+  PlaneFit FitAt(const Vector6d& D) const;
+
   std::vector<Member> measured_;
   std::vector<Member> plane_;
-  Eigen::Vector3d normal_ = Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d in_plane_[2];           // the plane's other eigenvectors
-  double in_plane_variance_[2] = {0, 0};  // and their eigenvalues (m^2)
-  double across_variance_ = 0.0;          // the smallest eigenvalue (m^2)
+  PlaneFit fit_;                                       // at D = 0
+  Eigen::Vector3d normal_ = Eigen::Vector3d::UnitZ();  // fit_'s normal
+  Eigen::Matrix<double, 3, 6> mean_jacobian_;          // mean over the plane's returns of dq/dD at D = 0
 };
 
 }  // namespace unimap::calibration

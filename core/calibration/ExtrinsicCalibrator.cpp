@@ -8,6 +8,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "calibration/CrossViewPlane.hpp"
+#include "calibration/LidarCorrection.hpp"
 #include "calibration/Neighbourhoods.hpp"
 
 namespace unimap::calibration {
@@ -18,22 +20,6 @@ constexpr double kDegToRad = M_PI / 180.0;
 // standard deviations on every axis: choosing the neighbourhoods anew from
 // the same map changes the estimate by about one.
 constexpr double kRoundSigmas = 3.0;
-
-Vector6d Log(const Eigen::Isometry3d& X) {
-  const Eigen::AngleAxisd aa(X.linear());
-  Vector6d v;
-  v << X.translation(), aa.angle() * aa.axis();
-  return v;
-}
-
-Eigen::Isometry3d Exp(const Vector6d& delta) {
-  const Eigen::Vector3d phi = delta.tail<3>();
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  const double angle = phi.norm();
-  if (angle > 0.0) T.linear() = Eigen::AngleAxisd(angle, phi / angle).toRotationMatrix();
-  T.translation() = delta.head<3>();
-  return T;
-}
 
 Eigen::Isometry3d WorldFromLidar(const CalibrationReturn& r) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -81,8 +67,8 @@ Matrix6d DataInformation(const Matrix6d& observed, double chi2, std::size_t resi
 }
 
 // The correction's covariance: the data's information and the prior's.
-Matrix6d Covariance(const Matrix6d& observed, double chi2, std::size_t residuals, const Vector6d& prior_weight) {
-  return (DataInformation(observed, chi2, residuals) + Matrix6d(prior_weight.asDiagonal())).inverse();
+Matrix6d Covariance(const Matrix6d& data, const Vector6d& prior_weight) {
+  return (data + Matrix6d(prior_weight.asDiagonal())).inverse();
 }
 
 // Huber's cost of a whitened residual (r^2 inside, linear beyond k) and its weight (IRLS).
@@ -165,7 +151,7 @@ CalibrationResult ExtrinsicCalibrator::Calibrate(const std::vector<CalibrationRe
       // accumulated correction (composition taken as addition, which holds
       // for the small corrections a platform file leaves); the normals held
       // (the Gauss-Newton model) or fitted again at D.
-      const Vector6d offset = Log(X);
+      const Vector6d offset = CorrectionLog(X);
       const auto objective = [&](const Vector6d& D, bool refit) {
         double sum = (offset + D).cwiseAbs2().dot(prior_weight);
         for (const CrossViewPlane& p : planes) {
@@ -218,9 +204,9 @@ CalibrationResult ExtrinsicCalibrator::Calibrate(const std::vector<CalibrationRe
         }
         damping = damping == 0.0 ? 1e-3 : damping * 10.0;
       }
-      X = X * Exp(step);
+      X = X * CorrectionExp(step);
       result.iterations += 1;
-      const Vector6d total = Log(X);
+      const Vector6d total = CorrectionLog(X);
       if (((total.array() / prior_sigma.array()).abs() > o.max_correction_sigmas).any()) {
         std::ostringstream why;
         why << "the views agree best " << (total.head<3>() * 1000.0).transpose() << " mm and "
@@ -238,8 +224,9 @@ CalibrationResult ExtrinsicCalibrator::Calibrate(const std::vector<CalibrationRe
       }
     }
     gate_m = std::max(3.0 * o.sigma_m, 3.0 * 1.4826 * MedianAbsoluteDistance(returns, neighbourhoods, X, o.sigma_m));
-    const Vector6d moved = Log(round_start.inverse() * X);
-    const Vector6d sigma = Covariance(observed, chi2, result.residuals, prior_weight).diagonal().cwiseSqrt();
+    const Vector6d moved = CorrectionLog(round_start.inverse() * X);
+    const Vector6d sigma =
+        Covariance(DataInformation(observed, chi2, result.residuals), prior_weight).diagonal().cwiseSqrt();
     if (steps_converged && (moved.array().abs() <= kRoundSigmas * sigma.array()).all()) {
       result.converged = true;
       break;
@@ -248,7 +235,7 @@ CalibrationResult ExtrinsicCalibrator::Calibrate(const std::vector<CalibrationRe
   result.ok = true;
   result.T_lidar_corrected = X;
   const Matrix6d data = DataInformation(observed, chi2, result.residuals);
-  result.covariance = Covariance(observed, chi2, result.residuals, prior_weight);
+  result.covariance = Covariance(data, prior_weight);
   const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(whiten(data));
   result.information_ratio = eig.eigenvalues().cwiseMax(0.0);
   result.directions = eig.eigenvectors();

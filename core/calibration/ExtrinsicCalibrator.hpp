@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "calibration/CalibrationOptions.hpp"
-#include "calibration/CrossViewPlane.hpp"
+#include "calibration/LidarCorrection.hpp"
 
 namespace unimap::calibration {
 

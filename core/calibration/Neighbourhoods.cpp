@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
-
+#include "calibration/PlaneFit.hpp"
 #include "calibration/PointGrid.hpp"
 
 namespace unimap::calibration {
@@ -34,6 +33,7 @@ std::vector<Neighbourhood> ChooseNeighbourhoods(const std::vector<CalibrationRet
   const double max_plane_variance = std::pow(o.max_plane_sigmas * o.sigma_m, 2);
   std::vector<Neighbourhood> chosen;
   std::vector<std::uint32_t> same, other;
+  std::vector<Eigen::Vector3d> plane_points;
   for (std::size_t i = 0; i < returns.size(); i += stride) {
     const CalibrationReturn& centre = returns[i];
     same.clear();
@@ -47,25 +47,18 @@ std::vector<Neighbourhood> ChooseNeighbourhoods(const std::vector<CalibrationRet
     if (static_cast<int>(other.size()) < o.min_neighbours) continue;
     Neighbourhood n;
     n.plane = Evenly(other, static_cast<std::size_t>(o.max_neighbours));
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-    for (const std::uint32_t k : n.plane) {
-      const Eigen::Vector3d q = world[k].cast<double>();
-      mean += q;
-      second += q * q.transpose();
-    }
-    const double K = static_cast<double>(n.plane.size());
-    mean /= K;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second / K - mean * mean.transpose());
-    const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
+    plane_points.clear();
+    for (const std::uint32_t k : n.plane) plane_points.push_back(world[k].cast<double>());
+    const PlaneFit fit = FitPlane(plane_points);
+    const Eigen::Vector3d& lambda = fit.eigenvalues;  // ascending
     if (!(lambda(0) <= o.planar_ratio * lambda(1)) || !(lambda(1) >= o.min_spread_ratio * lambda(2)) ||
         !(lambda(0) <= max_plane_variance)) {
       continue;
     }
-    const Eigen::Vector3d normal = eig.eigenvectors().col(0);
+    const Eigen::Vector3d normal = fit.eigenvectors.col(0);
     std::vector<std::uint32_t> near;
     for (const std::uint32_t k : same) {
-      if (std::abs(normal.dot(world[k].cast<double>() - mean)) <= gate_m) near.push_back(k);
+      if (std::abs(normal.dot(world[k].cast<double>() - fit.mean)) <= gate_m) near.push_back(k);
     }
     if (near.empty()) continue;
     n.measured = Evenly(near, static_cast<std::size_t>(o.max_measured));

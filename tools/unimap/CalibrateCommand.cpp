@@ -94,26 +94,28 @@ int RunCalibrate(const CalibrateOptions& options) {
     }
     const calibration::CalibrationResult r =
         calibration::ExtrinsicCalibrator(options.calibration).Calibrate(input.returns);
-    const auto write_map = [&](const char* name, const Eigen::Isometry3d& X) {
+    const auto write_map = [&](const char* name, const std::vector<Eigen::Vector3f>& map) {
       if (options.maps_dir.empty()) return;
       std::filesystem::create_directories(options.maps_dir);
       const std::filesystem::path file = std::filesystem::path(options.maps_dir) / name;
-      io::WritePly(file, calibration::ExtrinsicCalibrator::Assemble(input.returns, X));
+      io::WritePly(file, map);
       std::cout << "wrote " << file.string() << '\n';
     };
-    write_map("uncalibrated.ply", Eigen::Isometry3d::Identity());
+    const std::vector<Eigen::Vector3f> uncalibrated =
+        calibration::ExtrinsicCalibrator::Assemble(input.returns, Eigen::Isometry3d::Identity());
+    write_map("uncalibrated.ply", uncalibrated);
     if (!r.ok) {
       std::cerr << "error: " << options.data << ": cannot calibrate: " << r.failure << '\n';
       return 1;
     }
+    const std::vector<Eigen::Vector3f> calibrated =
+        calibration::ExtrinsicCalibrator::Assemble(input.returns, r.T_lidar_corrected);
     const Extrinsic before = Extrinsic::FromMap(platform.parameters, key);
     const Extrinsic after = FromIsometry(before.ToIsometry() * r.T_lidar_corrected);
     eval::MapQualityOptions quality;  // (an even subset: the measure's cost grows with the points evaluated)
     quality.max_points = 20000;
-    const eval::MapQuality q0 = eval::ComputeMapQuality(
-        calibration::ExtrinsicCalibrator::Assemble(input.returns, Eigen::Isometry3d::Identity()), quality);
-    const eval::MapQuality q1 = eval::ComputeMapQuality(
-        calibration::ExtrinsicCalibrator::Assemble(input.returns, r.T_lidar_corrected), quality);
+    const eval::MapQuality q0 = eval::ComputeMapQuality(uncalibrated, quality);
+    const eval::MapQuality q1 = eval::ComputeMapQuality(calibrated, quality);
     const Eigen::Matrix<double, 6, 1> sd = r.covariance.diagonal().cwiseSqrt();
     std::ostringstream report;
     report << "calibrated by `unimap calibrate` from " << options.data << " (" << input.returns.size() << " returns, "
@@ -132,8 +134,10 @@ int RunCalibrate(const CalibrateOptions& options) {
       if (r.information_ratio(k) >= options.calibration.min_information_ratio) continue;
       const auto d = r.directions.col(k);
       std::cout << "  not estimated: direction [translation " << Vec(d.head<3>(), 1, 3) << ", rotation "
-                << Vec(d.tail<3>(), 1, 3) << "] (in units of the prior's 0.1 m and 10 deg; information "
-                << std::setprecision(3) << r.information_ratio(k) << " x the prior's)\n";
+                << Vec(d.tail<3>(), 1, 3) << "] (in units of the prior's "
+                << options.calibration.prior_sigma_translation_m << " m and "
+                << options.calibration.prior_sigma_rotation_deg << " deg; information " << std::setprecision(3)
+                << r.information_ratio(k) << " x the prior's)\n";
     }
     // The platform file again, with the calibrated extrinsic.
     std::vector<ParameterOverride> parameters;
@@ -147,7 +151,7 @@ int RunCalibrate(const CalibrateOptions& options) {
     eval::WriteFileAtomically(
         options.out_file, WritePlatformYaml(platform.plugin_name, parameters, platform.mapper_settings, report.str()));
     std::cout << "wrote " << options.out_file << '\n';
-    write_map("calibrated.ply", r.T_lidar_corrected);
+    write_map("calibrated.ply", calibrated);
     return 0;
   } catch (const Error& e) {
     std::cerr << "error: " << e.what() << '\n';
