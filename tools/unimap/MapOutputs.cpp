@@ -112,6 +112,7 @@ Json WriteMapOutputs(const std::filesystem::path& out_dir, const pipeline::Mappe
   o["map_intensity"] = intensity != nullptr;
   o["map_voxel_m"] = options.map_voxel_m;
   o["map_quality"] = MapQualityJson(eval::ComputeMapQuality(points));
+  o["map_largest_planes"] = LargestPlanesJson(eval::FindLargestPlanes(points));
   o["messages"] = s.messages;
   return o;
 }

@@ -38,4 +38,37 @@ std::vector<eval::ExtraMetric> MapQualityMetrics(const eval::MapQuality& quality
   };
 }
 
+Json LargestPlanesJson(const std::vector<eval::MapPlane>& planes) {
+  Json a = Json::array();
+  for (const eval::MapPlane& p : planes) {
+    Json o = Json::object();
+    o["points"] = p.points;
+    o["normal"] = Json::array({p.normal.x(), p.normal.y(), p.normal.z()});
+    o["offset_m"] = p.offset_m;
+    o["thickness_m"] = p.thickness_m;
+    o["median_range_m"] = p.median_range_m;
+    a.push_back(std::move(o));
+  }
+  return a;
+}
+
+std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapPlane>& planes) {
+  std::vector<eval::ExtraMetric> rows;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const eval::MapPlane& p = planes[k];
+    const std::string name = "map_plane_" + std::to_string(k + 1);
+    const std::string which = "plane " + std::to_string(k + 1) + " of the largest (normal " + Fixed(p.normal.x(), 2) +
+                              " " + Fixed(p.normal.y(), 2) + " " + Fixed(p.normal.z(), 2) + ", " +
+                              Fixed(p.offset_m, 2) + " m from the origin)";
+    rows.push_back({Json(p.thickness_m),
+                    {name + "_thickness_m", Fixed(p.thickness_m, 4),
+                     which + ": thickness, 1.4826 x the median distance of its points from it (m)"}});
+    rows.push_back({Json(p.median_range_m),
+                    {name + "_median_range_m", Fixed(p.median_range_m, 2),
+                     which + ": median distance of its points from the map's origin (m)"}});
+    rows.push_back({Json(p.points), {name + "_points", std::to_string(p.points), which + ": its map points"}});
+  }
+  return rows;
+}
+
 }  // namespace unimap::cli

@@ -1,9 +1,10 @@
 #pragma once
-// The map's GT-free quality (eval::ComputeMapQuality) as run.json's
-// mapping.map_quality object and as metrics rows.
+// The map's GT-free quality (eval::ComputeMapQuality, eval::FindLargestPlanes)
+// as run.json's mapping objects and as metrics rows.
 #include <vector>
 
 #include "Json.hpp"
+#include "eval/LargestPlanes.hpp"
 #include "eval/MapQuality.hpp"
 #include "eval/MetricRows.hpp"
 
@@ -15,5 +16,13 @@ Json MapQualityJson(const eval::MapQuality& quality, const eval::MapQualityOptio
 // The same as metrics.json entries and display rows (map_mean_entropy, ...).
 std::vector<eval::ExtraMetric> MapQualityMetrics(const eval::MapQuality& quality,
                                                  const eval::MapQualityOptions& options = {});
+
+// The largest planes (eval::FindLargestPlanes), largest first, as an array
+// of {"points", "normal", "offset_m", "thickness_m", "median_range_m"}.
+Json LargestPlanesJson(const std::vector<eval::MapPlane>& planes);
+
+// The same as metrics.json entries and display rows: map_plane_K_thickness_m,
+// map_plane_K_median_range_m and map_plane_K_points for K = 1, 2, ...
+std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapPlane>& planes);
 
 }  // namespace unimap::cli
