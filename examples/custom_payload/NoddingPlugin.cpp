@@ -76,7 +76,7 @@ unimap::CoreParameters DefaultCore() {
   core.sigma_accel_m_s2 = 0.02;
   core.sigma_gyro_rad_s = 0.002;
   core.distance_map_resolution_m = 0.1;
-  core.distance_map_max_range_m = 15.0;
+  core.distance_map_max_range_m = 30.0;  // the scanner's range: far returns hold a corridor's long axis
   return core;
 }
 

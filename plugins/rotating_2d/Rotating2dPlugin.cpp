@@ -21,8 +21,10 @@ CoreDefaults RotatingHokuyoCoreDefaults() {
   d.why_sigma_g = "a MEMS IMU sampled at 200 Hz";
   d.values.distance_map_resolution_m = 0.1;
   d.why_resolution = "narrow hallways and tunnels: 0.1 m resolves a 1.1 m-wide corridor";
-  d.values.distance_map_max_range_m = 15.0;
-  d.why_max_range = "half the scanner's 30 m range: sparse far returns add little";
+  d.values.distance_map_max_range_m = 30.0;
+  d.why_max_range =
+      "the scanner's 30 m range: a line holds few returns, and the far ones (a corridor's or a tunnel's end "
+      "walls) are what hold its long axis";
   return d;
 }
 

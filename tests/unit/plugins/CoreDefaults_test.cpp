@@ -17,7 +17,7 @@ const std::map<std::string, CoreParameters>& ExpectedCoreDefaults() {
   static const std::map<std::string, CoreParameters> expected = {
       {"fixed_3d", {5, 20, 10, 0.02, 0.002, 0.1, 20.0}},
       {"rotating_3d", {10, 20, 10, 0.02, 0.002, 0.3, 20.0}},
-      {"rotating_2d", {40, 20, 10, 0.02, 0.002, 0.1, 15.0}},
+      {"rotating_2d", {40, 20, 10, 0.02, 0.002, 0.1, 30.0}},
   };
   return expected;
 }
