@@ -109,11 +109,10 @@ std::vector<MapPlane> FindLargestPlanes(const std::vector<Eigen::Vector3f>& poin
   std::vector<MapPlane> planes;
   std::vector<std::size_t> remaining(points_map.size());
   for (std::size_t i = 0; i < remaining.size(); ++i) remaining[i] = i;
-  const auto min_points =
-      static_cast<std::size_t>(std::ceil(options.min_share * static_cast<double>(points_map.size())));
+  const std::size_t min_points = std::max<std::size_t>(
+      3, static_cast<std::size_t>(std::ceil(options.min_share * static_cast<double>(points_map.size()))));
   std::mt19937_64 rng(options.seed);
-  while (static_cast<int>(planes.size()) < options.max_planes &&
-         remaining.size() >= std::max<std::size_t>(3, min_points)) {
+  while (static_cast<int>(planes.size()) < options.max_planes && remaining.size() >= min_points) {
     const std::size_t stride =
         std::max<std::size_t>(1, (remaining.size() + options.max_scored_points - 1) / options.max_scored_points);
     std::vector<std::size_t> sample;
@@ -125,7 +124,7 @@ std::vector<MapPlane> FindLargestPlanes(const std::vector<Eigen::Vector3f>& poin
       if (!FitPlane(points_map, Near(points_map, remaining, plane, options.inlier_distance_m), &plane)) break;
     }
     const std::vector<std::size_t> band = Near(points_map, remaining, plane, options.band_m);
-    if (band.size() < std::max<std::size_t>(3, min_points)) break;
+    if (band.size() < min_points) break;
     std::vector<double> distances, ranges;
     distances.reserve(band.size());
     ranges.reserve(band.size());

@@ -17,7 +17,6 @@
 #include "TextTable.hpp"
 #include "eval/AtomicFile.hpp"
 #include "eval/EvaluationReport.hpp"
-#include "eval/MapQuality.hpp"
 #include "eval/MetricRows.hpp"
 #include "eval/TrajectoryEvaluation.hpp"
 #include "io/TumTrajectory.hpp"
@@ -56,8 +55,7 @@ void RequirePositive(const char* option, double value) {
 // OUT/metrics.json (OUT: --out, else the map's folder).
 int EvaluateMapOnly(const EvaluateOptions& options) {
   const std::vector<Eigen::Vector3f> points = LoadMapPoints(options.map_file);
-  std::vector<eval::ExtraMetric> metrics = MapQualityMetrics(eval::ComputeMapQuality(points));
-  for (eval::ExtraMetric& m : LargestPlanesMetrics(eval::FindLargestPlanes(points))) metrics.push_back(std::move(m));
+  const std::vector<eval::ExtraMetric> metrics = MapMetricsWithoutTruth(points);
   const std::filesystem::path out_dir = options.out_dir.empty()
                                             ? std::filesystem::absolute(options.map_file).parent_path()
                                             : std::filesystem::path(options.out_dir);
@@ -130,11 +128,7 @@ int RunEvaluate(const EvaluateOptions& options) {
     }
     eval::ReportExtras map_extras = map_evaluation ? MapReportExtras(*map_evaluation) : eval::ReportExtras{};
     if (!options.map_file.empty()) {  // its quality without the truth, with or without a world
-      const std::vector<Eigen::Vector3f> points = LoadMapPoints(options.map_file);
-      for (eval::ExtraMetric& m : MapQualityMetrics(eval::ComputeMapQuality(points))) {
-        map_extras.metrics.push_back(std::move(m));
-      }
-      for (eval::ExtraMetric& m : LargestPlanesMetrics(eval::FindLargestPlanes(points))) {
+      for (eval::ExtraMetric& m : MapMetricsWithoutTruth(LoadMapPoints(options.map_file))) {
         map_extras.metrics.push_back(std::move(m));
       }
     }

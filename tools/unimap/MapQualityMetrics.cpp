@@ -1,6 +1,7 @@
 #include "MapQualityMetrics.hpp"
 
 #include <string>
+#include <utility>
 
 #include "TextFormat.hpp"
 
@@ -68,6 +69,12 @@ std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapP
                      which + ": median distance of its points from the map's origin (m)"}});
     rows.push_back({Json(p.points), {name + "_points", std::to_string(p.points), which + ": its map points"}});
   }
+  return rows;
+}
+
+std::vector<eval::ExtraMetric> MapMetricsWithoutTruth(const std::vector<Eigen::Vector3f>& points_map) {
+  std::vector<eval::ExtraMetric> rows = MapQualityMetrics(eval::ComputeMapQuality(points_map));
+  for (eval::ExtraMetric& m : LargestPlanesMetrics(eval::FindLargestPlanes(points_map))) rows.push_back(std::move(m));
   return rows;
 }
 

@@ -25,4 +25,8 @@ Json LargestPlanesJson(const std::vector<eval::MapPlane>& planes);
 // map_plane_K_median_range_m and map_plane_K_points for K = 1, 2, ...
 std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapPlane>& planes);
 
+// Both of a map's GT-free measures as metrics rows: MapQualityMetrics of
+// its quality, then LargestPlanesMetrics of its largest planes.
+std::vector<eval::ExtraMetric> MapMetricsWithoutTruth(const std::vector<Eigen::Vector3f>& points_map);
+
 }  // namespace unimap::cli
