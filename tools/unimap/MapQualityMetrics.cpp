@@ -68,6 +68,10 @@ std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapP
                     {name + "_median_range_m", Fixed(p.median_range_m, 2),
                      which + ": median distance of its points from the map's origin (m)"}});
     rows.push_back({Json(p.points), {name + "_points", std::to_string(p.points), which + ": its map points"}});
+    rows.push_back({Json(p.normal.z()),
+                    {name + "_normal_z", Fixed(p.normal.z(), 2),
+                     which + ": its normal's z component (0: a vertical surface, +-1: a horizontal one, where "
+                             "the map's z is vertical)"}});
   }
   return rows;
 }

@@ -22,7 +22,7 @@ std::vector<eval::ExtraMetric> MapQualityMetrics(const eval::MapQuality& quality
 Json LargestPlanesJson(const std::vector<eval::MapPlane>& planes);
 
 // The same as metrics.json entries and display rows: map_plane_K_thickness_m,
-// map_plane_K_median_range_m and map_plane_K_points for K = 1, 2, ...
+// map_plane_K_median_range_m, map_plane_K_points and map_plane_K_normal_z for K = 1, 2, ...
 std::vector<eval::ExtraMetric> LargestPlanesMetrics(const std::vector<eval::MapPlane>& planes);
 
 // Both of a map's GT-free measures as metrics rows: MapQualityMetrics of

@@ -165,7 +165,7 @@ case $case_name in
     { printf 'ply\nformat ascii 1.0\nelement vertex 1600\nproperty float x\nproperty float y\nproperty float z\nend_header\n'
       plane 1; } >"$work/$case_name.plane1.ply"
     code=$(run evaluate --map "$work/$case_name.plane1.ply" --out "$work/$case_name.eval3"); [ "$code" = 0 ] || fail "exit $code"
-    expect "^map_plane_1_thickness_m +0\.0000 "; expect "^map_plane_1_points +1600 "
+    expect "^map_plane_1_thickness_m +0\.0000 "; expect "^map_plane_1_points +1600 "; expect "^map_plane_1_normal_z +-?1\.00 "
     grep -Eq '^  "map_plane_1_median_range_m": [0-9.e-]+,?$' "$work/$case_name.eval3/metrics.json" || fail "metrics.json lacks the plane's range"
     ! grep -q map_plane_2 "$work/$case_name.eval3/metrics.json" || fail "a second plane in a one-plane map"
     code=$(run evaluate --estimate "$work/$case_name.plane.ply"); [ "$code" = 2 ] || fail "exit $code, expected 2"
