@@ -1,5 +1,6 @@
 #include "estimation/Eskf.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <stdexcept>
@@ -16,7 +17,9 @@ using Matrix15x3d = Eigen::Matrix<double, 15, 3>;
 
 const int kPoseRows[6] = {kP, kP + 1, kP + 2, kTheta, kTheta + 1, kTheta + 2};
 
-Matrix15d InitialCovariance(const EskfOptions& o) {
+}  // namespace
+
+ErrorCovariance InitialCovariance(const EskfOptions& o) {
   Vector15d sigma;
   sigma << Eigen::Vector3d::Constant(o.initial_sigma_position_m),
       Eigen::Vector3d::Constant(o.initial_sigma_velocity_m_s), Eigen::Vector3d::Constant(o.initial_sigma_attitude_rad),
@@ -24,8 +27,6 @@ Matrix15d InitialCovariance(const EskfOptions& o) {
       Eigen::Vector3d::Constant(o.initial_sigma_gyro_bias_rad_s);
   return sigma.array().square().matrix().asDiagonal();
 }
-
-}  // namespace
 
 Eskf::Eskf(EskfOptions options) : options_(options) {
   std::string why;
@@ -38,6 +39,11 @@ void Eskf::Initialize(const NavState& state, const ErrorCovariance& covariance) 
   state_ = state;
   state_.q_world_body.normalize();
   P_ = covariance;
+  initial_pose_P_.setZero();
+  for (const int r : kPoseRows) {
+    for (const int c : kPoseRows) initial_pose_P_(r, c) = covariance(r, c);
+  }
+  start_transfer_.setIdentity();
   initialized_ = true;
   has_last_imu_ = false;
 }
@@ -119,6 +125,7 @@ void Eskf::Step(const ImuSample& from, const ImuSample& to) {
   Q.block<3, 3>(kBg, kBg) += wg2 * dt * Eigen::Matrix3d::Identity();
   P_ = F * P_ * F.transpose() + Q;
   P_ = 0.5 * (P_ + P_.transpose());
+  start_transfer_ = F * start_transfer_;
 }
 
 PoseUpdateResult Eskf::UpdatePoseError(const Vector6d& z, const Matrix6d& R) {
@@ -135,6 +142,7 @@ PoseUpdateResult Eskf::UpdatePoseError(const Vector6d& z, const Matrix6d& R) {
   const Matrix15d I_KH = Matrix15d::Identity() - K * H;
   P_ = I_KH * P_ * I_KH.transpose() + K * R * K.transpose();  // Joseph form
   P_ = 0.5 * (P_ + P_.transpose());
+  start_transfer_ = I_KH * start_transfer_;
   result.pose_covariance_before_reset = PoseCovariance();
   result.applied = true;
   result.mahalanobis_sq = z.dot(llt.solve(z));
@@ -159,6 +167,7 @@ void Eskf::PredictPose(double time_s, const Eigen::Isometry3d& T_prev_next, cons
   F.block<3, 3>(kP, kTheta) = -R * Skew(dp);
   F.block<3, 3>(kTheta, kTheta) = dR.transpose();
   P_ = F * P_ * F.transpose();
+  start_transfer_ = F * start_transfer_;
   P_.block<3, 3>(kP, kP) += R * covariance.topLeftCorner<3, 3>() * R.transpose();
   P_.block<3, 3>(kP, kTheta) += R * covariance.topRightCorner<3, 3>();
   P_.block<3, 3>(kTheta, kP) += covariance.bottomLeftCorner<3, 3>() * R.transpose();
@@ -184,6 +193,7 @@ void Eskf::InflateMotionCovariance(double factor) {
   Eigen::Matrix<double, 15, 1> scale = Eigen::Matrix<double, 15, 1>::Ones();
   scale.segment<9>(error_index::kP).setConstant(s);  // p, v, theta
   P_ = scale.asDiagonal() * P_ * scale.asDiagonal();
+  start_transfer_ = scale.asDiagonal() * start_transfer_;
 }
 
 Matrix6d Eskf::PoseCovariance() const {
@@ -191,6 +201,16 @@ Matrix6d Eskf::PoseCovariance() const {
   for (int r = 0; r < 6; ++r) {
     for (int c = 0; c < 6; ++c) out(r, c) = P_(kPoseRows[r], kPoseRows[c]);
   }
+  return out;
+}
+
+Matrix6d Eskf::PoseCovarianceRelativeToStart() const {
+  const ErrorCovariance from_start = start_transfer_ * initial_pose_P_ * start_transfer_.transpose();
+  Matrix6d out;
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) out(r, c) = P_(kPoseRows[r], kPoseRows[c]) - from_start(kPoseRows[r], kPoseRows[c]);
+  }
+  for (int i = 0; i < 6; ++i) out(i, i) = std::max(out(i, i), 0.0);
   return out;
 }
 
@@ -204,6 +224,7 @@ void Eskf::InjectAndReset(const Eigen::Matrix<double, 15, 1>& dx) {
   Matrix15d G = Matrix15d::Identity();
   G.block<3, 3>(kTheta, kTheta) -= Skew(0.5 * dx.segment<3>(kTheta));
   P_ = G * P_ * G.transpose();
+  start_transfer_ = G * start_transfer_;
 }
 
 }  // namespace unimap::estimation

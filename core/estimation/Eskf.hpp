@@ -13,6 +13,10 @@ using ErrorCovariance = Eigen::Matrix<double, 15, 15>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
+// The covariance Eskf::Initialize(state) starts from: the options' initial
+// sigmas, uncorrelated.
+ErrorCovariance InitialCovariance(const EskfOptions& options);
+
 // Outcome of one pose update.
 struct PoseUpdateResult {
   bool applied = false;                          // false: the innovation covariance was not positive definite
@@ -73,6 +77,15 @@ class Eskf {
   const ErrorCovariance& covariance() const { return P_; }
   // Marginal covariance of [dp, dtheta].
   Matrix6d PoseCovariance() const;
+  // PoseCovariance() less what the initial pose's uncertainty (the position
+  // and attitude blocks of the covariance given to Initialize) still
+  // contributes to it, each variance at least 0. The map's frame is the
+  // first pose's: an error of that pose is shared by the map built from it
+  // and by every pose matched against that map, so it does not move a
+  // point relative to the map. The contribution is A P0 A', A the product
+  // of every transition, update and reset since Initialize (the covariance
+  // is linear in P0 given the gains): it fades as updates replace the prior.
+  Matrix6d PoseCovarianceRelativeToStart() const;
   const EskfOptions& options() const { return options_; }
 
  private:
@@ -85,6 +98,11 @@ class Eskf {
   ImuSample last_imu_;
   NavState state_;
   ErrorCovariance P_ = ErrorCovariance::Identity();
+  // Initial pose covariance (position and attitude blocks of Initialize's,
+  // the rest zero) and how it has been carried into P_ since (see
+  // PoseCovarianceRelativeToStart).
+  ErrorCovariance initial_pose_P_ = ErrorCovariance::Zero();
+  ErrorCovariance start_transfer_ = ErrorCovariance::Identity();
 };
 
 }  // namespace unimap::estimation

@@ -45,6 +45,7 @@ StaticAlignment AlignFromStatic(const std::vector<ImuSample>& samples, const Sta
                      Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
                      Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
   out.gyro_bias_rad_s = mean_w;
+  out.gyro_bias_std_rad_s = std_w / std::sqrt(n);
   out.gravity_m_s2 = f.norm();
   out.mean_specific_force_m_s2 = f;
   out.ok = true;

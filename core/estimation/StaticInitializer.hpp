@@ -15,6 +15,7 @@ struct StaticAlignment {
   std::string reason;  // why not ok
   Eigen::Quaterniond q_world_body = Eigen::Quaterniond::Identity();    // roll, pitch from gravity; yaw given
   Eigen::Vector3d gyro_bias_rad_s = Eigen::Vector3d::Zero();           // mean angular rate
+  Eigen::Vector3d gyro_bias_std_rad_s = Eigen::Vector3d::Zero();       // its standard error (std / sqrt(samples))
   double gravity_m_s2 = 0.0;                                           // measured specific-force magnitude
   Eigen::Vector3d mean_specific_force_m_s2 = Eigen::Vector3d::Zero();  // mean accelerometer reading (body)
   double accel_std_m_s2 = 0.0;  // accelerometer scatter at rest: the root mean of the axes' variances

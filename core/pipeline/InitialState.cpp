@@ -16,6 +16,8 @@ InitialState InitialStateFromWindow(const std::vector<ImuSample>& window,
   if (alignment.ok) {
     out.state.q_world_body = alignment.q_world_body;
     out.state.gyro_bias_rad_s = alignment.gyro_bias_rad_s;
+    out.sigma_gyro_bias_rad_s =
+        alignment.gyro_bias_std_rad_s.cwiseMin(options.eskf.initial_sigma_gyro_bias_rad_s).eval();
     // Along gravity the accelerometer's bias is what the specific force at
     // rest exceeds gravity by (across it, bias and tilt cannot be told apart).
     const Eigen::Vector3d up_body = alignment.mean_specific_force_m_s2.normalized();

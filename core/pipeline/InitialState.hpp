@@ -22,6 +22,10 @@ struct InitialState {
   // file claims a better IMU than the data shows): the filter's sigmas.
   std::optional<double> sigma_accel_m_s2;
   std::optional<double> sigma_gyro_rad_s;
+  // The gyro bias's standard deviation per axis, as the static window
+  // measured it (the standard error of its mean rate), when that is below
+  // the options' initial_sigma_gyro_bias_rad_s: the filter's initial one.
+  std::optional<Eigen::Vector3d> sigma_gyro_bias_rad_s;
   // A sample standard deviation of a 1 s window at 200 Hz varies by ~5 %:
   // more than this ratio is the IMU's, not chance.
   static constexpr double kNoiseMargin = 1.2;

@@ -182,7 +182,12 @@ void Localizer::TryInitialize() {
   for (std::string& note : start.notes) {
     if (stats_.messages.size() < kMaxMessages) stats_.messages.push_back(std::move(note));
   }
-  eskf_.Initialize(start.state);
+  estimation::ErrorCovariance covariance = estimation::InitialCovariance(options_.eskf);
+  if (start.sigma_gyro_bias_rad_s) {
+    covariance.block<3, 3>(estimation::error_index::kBg, estimation::error_index::kBg) =
+        start.sigma_gyro_bias_rad_s->cwiseAbs2().asDiagonal();
+  }
+  eskf_.Initialize(start.state, covariance);
   if (start.sigma_accel_m_s2 || start.sigma_gyro_rad_s) {
     eskf_.SetImuNoise(start.sigma_accel_m_s2.value_or(options_.eskf.sigma_accel_m_s2),
                       start.sigma_gyro_rad_s.value_or(options_.eskf.sigma_gyro_rad_s));
@@ -291,7 +296,8 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
     ScanMatchResult matched_scan;
     {
       StageTimer timer(&match_s);
-      matched_scan = matcher_.Match(field, T_predicted, eskf_.PoseCovariance(), points_body, is_line);
+      matched_scan = matcher_.Match(field, T_predicted, eskf_.PoseCovariance(), eskf_.PoseCovarianceRelativeToStart(),
+                                    points_body, is_line);
     }
     const matching::GpfResult& match = matched_scan.match;
     stats_.scans_searched += matched_scan.searched ? 1 : 0;

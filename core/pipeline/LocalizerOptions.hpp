@@ -32,9 +32,10 @@ struct LocalizerOptions {
   double max_predicted_distance_m = 0.0;     // > 0: points farther than this from the map at the
                                              // predicted pose are not measured (GaussianParticleFilter::Match;
                                              // FromPlatform: 1.5 voxels). 0: all measured
-  double sweep_gate_sigmas = 3.0;            // 3D sweeps: the gate above widens by this many sigmas of the
-                                             // prediction (position + range x rotation), so an uncertain
-                                             // prediction keeps its points; line scans use the gate as is
+  double sweep_gate_sigmas = 3.0;            // the gate above widens by this many sigmas of the pose's
+                                             // uncertainty relative to the map, so an uncertain prediction
+                                             // keeps its points: range x rotation for every scan, plus
+                                             // position for 3D sweeps (ScanMatcher::Match)
   bool localize_only = false;                // true: a prior map is given and never modified
   double max_scan_latency_s = 0.5;           // a scan still lacking encoder coverage this long after its end is skipped
   bool trilinear_distance = true;            // GPF reads the distance map trilinearly (false: nearest voxel)

@@ -21,18 +21,27 @@ ScanMatcher::ScanMatcher(const LocalizerOptions& options)
 
 ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceField>& field,
                                    const Eigen::Isometry3d& T_predicted, const matching::Matrix6d& predicted_covariance,
+                                   const matching::Matrix6d& map_relative_covariance,
                                    const std::vector<Eigen::Vector3f>& points_body, bool line) {
   const FieldDistanceQuery query(field, options_.trilinear_distance, options_.neighborhood_planes);
   const double position_sigma = std::sqrt(predicted_covariance.diagonal().head<3>().maxCoeff());
   const double rotation_sigma = std::sqrt(predicted_covariance.diagonal().tail<3>().maxCoeff());
+  const double gate_position_sigma = std::sqrt(map_relative_covariance.diagonal().head<3>().maxCoeff());
+  const double gate_rotation_sigma = std::sqrt(map_relative_covariance.diagonal().tail<3>().maxCoeff());
   // Points far from every mapped surface at the prediction look at what the
   // map has not seen (past the frontier ahead, above the band a narrow
   // vertical field of view has mapped); measured against the nearest mapped
-  // surface they pull the pose towards it. A sweep's gate allows for the
-  // prediction's own uncertainty; a line's is fixed (it is never searched).
-  const bool widen = options_.max_predicted_distance_m > 0.0 && !line;
-  const double gate_m = options_.max_predicted_distance_m + (widen ? options_.sweep_gate_sigmas * position_sigma : 0.0);
-  const double gate_per_range = widen ? options_.sweep_gate_sigmas * rotation_sigma : 0.0;
+  // surface they pull the pose towards it. The gate allows for the pose's
+  // rotation uncertainty relative to the map, which moves a point by its
+  // range times the angle, for every scan; a sweep's also for its position
+  // uncertainty (a line's position term let the points between a line
+  // scanner's stripes in: docs/robustness.md, "The line gate"). Relative
+  // to the map: the first pose's uncertainty, which the map shares, would
+  // widen the gate at the start, where nothing has moved yet.
+  const bool widen = options_.max_predicted_distance_m > 0.0;
+  const double gate_m =
+      options_.max_predicted_distance_m + (widen && !line ? options_.sweep_gate_sigmas * gate_position_sigma : 0.0);
+  const double gate_per_range = widen ? options_.sweep_gate_sigmas * gate_rotation_sigma : 0.0;
   const bool wide = position_sigma > options_.reacquire.wide_sigma_voxels * field->resolution() ||
                     rotation_sigma > options_.reacquire.wide_sigma_rad;
   ScanMatchResult out;

@@ -34,14 +34,19 @@ class ScanMatcher {
  public:
   explicit ScanMatcher(const LocalizerOptions& options);
 
-  // points_body: the deskewed scan; line: a 2D line scan. Points farther
-  // from the map at the prediction than LocalizerOptions::
-  // max_predicted_distance_m are not measured; for a sweep (line false)
-  // that limit grows by sweep_gate_sigmas of the prediction (position, and
-  // the point's range times rotation).
+  // points_body: the deskewed scan; line: a 2D line scan.
+  // predicted_covariance: the prediction's [dp, dtheta] covariance (the
+  // particles' prior). map_relative_covariance: the part of it that moves a
+  // point relative to the map (estimation::Eskf::
+  // PoseCovarianceRelativeToStart). Points farther from the map at the
+  // prediction than LocalizerOptions::max_predicted_distance_m are not
+  // measured; that limit grows by sweep_gate_sigmas of the map-relative
+  // uncertainty: the point's range times rotation, and for a sweep (line
+  // false) also position.
   ScanMatchResult Match(const std::shared_ptr<const map::DistanceField>& field, const Eigen::Isometry3d& T_predicted,
-                        const matching::Matrix6d& predicted_covariance, const std::vector<Eigen::Vector3f>& points_body,
-                        bool line);
+                        const matching::Matrix6d& predicted_covariance,
+                        const matching::Matrix6d& map_relative_covariance,
+                        const std::vector<Eigen::Vector3f>& points_body, bool line);
 
  private:
   LocalizerOptions options_;

@@ -2,7 +2,7 @@
 #   UNIMAP_BUILD_DIR    the unimap build tree to install
 #   EXAMPLE_SOURCE_DIR  examples/custom_payload
 #   SCENARIO_FILE       a scenario the example payload is simulated in
-#   WORK_DIR            scratch folder (recreated): prefix/ and build/
+#   WORK_DIR            scratch folder (recreated): prefix/, build/, simulated data and runs
 #   GENERATOR, CXX_COMPILER, BUILD_TYPE  used for the example's build
 # Every step must succeed; the first failure ends the test with its name.
 cmake_minimum_required(VERSION 3.22)
@@ -91,4 +91,21 @@ message(STATUS "nodding encoder: ${encoder_count} samples, ${lowest} .. ${highes
 # -45 and +45 deg are -0.7854 and 0.7854 rad; the scenario's encoder quantises to its counts.
 if(encoder_count LESS 100 OR lowest GREATER -0.78 OR lowest LESS -0.79 OR highest LESS 0.78 OR highest GREATER 0.79)
   message(FATAL_ERROR "the simulated servo does not nod -45..+45 deg: ${encoder_count} samples, ${lowest} .. ${highest}")
+endif()
+
+# 6. The example maps the whole narrow hallway (simulated with the installed
+#    `unimap simulate`, mapped by the installed `unimap run` with the
+#    payload's own defaults and nothing else) to the issue's ATE <= 0.15 m.
+set(hallway "${WORK_DIR}/nodding_hallway")
+set(hallway_run "${WORK_DIR}/nodding_hallway_run")
+run_step("simulate the hallway" "${CMAKE_COMMAND}" -E env "UNIMAP_PLUGIN_PATH=${example_build}"
+  ${installed_unimap} simulate --scenario "${SCENARIO_FILE}" --payload "${WORK_DIR}/nodding.yaml" --out "${hallway}")
+run_step("map the hallway" "${CMAKE_COMMAND}" -E env "UNIMAP_PLUGIN_PATH=${example_build}"
+  ${installed_unimap} run --threads 1 --quiet --platform "${WORK_DIR}/nodding.yaml" --data "${hallway}"
+  --out "${hallway_run}")
+file(READ "${hallway_run}/metrics.json" metrics)
+string(JSON ate GET "${metrics}" ate_rmse_m)
+message(STATUS "nodding example, narrow hallway: ate_rmse_m ${ate}")
+if(ate GREATER 0.15)
+  message(FATAL_ERROR "the nodding example maps the narrow hallway to ATE ${ate} m, above 0.15 m")
 endif()

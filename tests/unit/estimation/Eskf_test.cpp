@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -174,6 +175,74 @@ TEST(Eskf, FilterIsConsistentOverMonteCarloRuns) {
   EXPECT_GT(anees, lower);
   EXPECT_LT(anees, upper);
   std::cout << "ANEES " << anees << " in [" << lower << ", " << upper << "]\n";
+}
+
+// Figure-eight IMU samples at 200 Hz with white noise (fixed seed).
+std::vector<ImuSample> NoisyFigureEight(int count) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<ImuSample> out;
+  for (int k = 0; k < count; ++k) {
+    ImuSample s = PerfectImu(testing::FigureEight, 0.005 * k);
+    s.accel_m_s2 += 0.02 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    s.gyro_rad_s += 0.002 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    out.push_back(s);
+  }
+  return out;
+}
+
+TEST(Eskf, PoseCovarianceRelativeToStartLeavesOutTheInitialPoseUncertainty) {
+  EskfOptions options;
+  options.gravity_m_s2 = testing::kGravity;
+  Eskf filter(options);
+  const NavState start = TruthState(testing::FigureEight, 0.0);
+  filter.Initialize(start);
+  EXPECT_LT(filter.PoseCovarianceRelativeToStart().norm(), 1e-15);
+  // The same filter started with no pose uncertainty (velocity and biases as
+  // before): without updates the covariance is linear in the start's, so its
+  // pose covariance is the first's less the start's pose part, exactly.
+  ErrorCovariance without_pose = InitialCovariance(options);
+  without_pose.topLeftCorner<3, 3>().setZero();
+  without_pose.block<3, 3>(error_index::kTheta, error_index::kTheta).setZero();
+  Eskf reference(options);
+  reference.Initialize(start, without_pose);
+  for (const ImuSample& s : NoisyFigureEight(1001)) {
+    ASSERT_TRUE(filter.Propagate(s));
+    ASSERT_TRUE(reference.Propagate(s));
+  }
+  const Matrix6d relative = filter.PoseCovarianceRelativeToStart();
+  EXPECT_TRUE(relative.isApprox(reference.PoseCovariance(), 1e-9)) << relative << "\n\n" << reference.PoseCovariance();
+  // It is the smaller: the start's attitude sigma (0.01 rad) is left out.
+  EXPECT_LT(relative(3, 3), filter.PoseCovariance()(3, 3));
+}
+
+TEST(Eskf, PoseCovarianceRelativeToStartBecomesTheFullOneAsUpdatesReplaceThePrior) {
+  EskfOptions options;
+  options.gravity_m_s2 = testing::kGravity;
+  Eskf filter(options);
+  filter.Initialize(TruthState(testing::FigureEight, 0.0));
+  Matrix6d R = Matrix6d::Zero();
+  R.diagonal() << 0.02, 0.02, 0.02, 0.002, 0.002, 0.002;
+  R = R.array().square().matrix();
+  const std::vector<ImuSample> samples = NoisyFigureEight(4001);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    ASSERT_TRUE(filter.Propagate(samples[k]));
+    if (k == 20) {
+      // One update: the start's part has shrunk but is still there.
+      const Matrix6d full = filter.PoseCovariance();
+      const Matrix6d relative = filter.PoseCovarianceRelativeToStart();
+      EXPECT_LT(relative(3, 3), 0.9 * full(3, 3));
+    }
+    if (k > 0 && k % 20 == 0) {
+      const Eigen::Isometry3d T = TruthState(testing::FigureEight, samples[k].time_s).T_world_body();
+      ASSERT_TRUE(filter.UpdatePose(T, R).applied);
+    }
+  }
+  // 200 updates later the start hardly counts (measured: 0.1-0.2 % of each
+  // variance is left of it).
+  const Matrix6d full = filter.PoseCovariance();
+  const Matrix6d relative = filter.PoseCovarianceRelativeToStart();
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(relative(i, i), full(i, i), 1e-2 * full(i, i)) << i;
 }
 
 }  // namespace

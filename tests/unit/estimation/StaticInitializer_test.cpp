@@ -1,5 +1,6 @@
 #include "estimation/StaticInitializer.hpp"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -36,6 +37,18 @@ TEST(AlignFromStatic, RecoversRollPitchAndGyroBias) {
   EXPECT_LT(LogQ(a.q_world_body.conjugate() * q).norm(), 1e-12);
   EXPECT_TRUE(a.gyro_bias_rad_s.isApprox(bg, 1e-12));
   EXPECT_NEAR(a.gravity_m_s2, 9.81, 1e-12);
+}
+
+TEST(AlignFromStatic, GyroBiasComesWithItsStandardError) {
+  const Eigen::Vector3d bg(0.004, -0.003, 0.002);
+  // Gyroscope white noise 0.002 rad/s per sample (StaticSamples: a tenth
+  // of the accelerometer's), 400 samples: the mean's error is 0.002 / 20.
+  const StaticAlignment a = AlignFromStatic(StaticSamples(Eigen::Quaterniond::Identity(), bg, 0.02, 400), {});
+  ASSERT_TRUE(a.ok) << a.reason;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(a.gyro_bias_std_rad_s[i], 1e-4, 1e-5) << i;
+    EXPECT_LT(std::abs(a.gyro_bias_rad_s[i] - bg[i]), 4.0 * a.gyro_bias_std_rad_s[i]) << i;
+  }
 }
 
 TEST(AlignFromStatic, RefusesMotionAndShortWindows) {

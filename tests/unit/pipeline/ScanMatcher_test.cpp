@@ -74,11 +74,20 @@ matching::Matrix6d Covariance(double sigma_m, double sigma_rad) {
   return c;
 }
 
+// A line scan (ScanWithUnmappedWall) matched at the centre with the given
+// covariances; *unmapped receives how many of its points see no map.
+ScanMatchResult MatchLine(const matching::Matrix6d& predicted, const matching::Matrix6d& map_relative, int* unmapped) {
+  const std::vector<V3> scan = ScanWithUnmappedWall(unmapped);
+  ScanMatcher matcher(Options());
+  return matcher.Match(BoxField(), AtCenter(), predicted, map_relative, scan, true);
+}
+
 TEST(ScanMatcher, ConfidentSweepLeavesOutPointsPastTheMap) {
   int unmapped = 0;
   const std::vector<V3> scan = ScanWithUnmappedWall(&unmapped);
   ScanMatcher matcher(Options());
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, false);
+  const ScanMatchResult r =
+      matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), Covariance(0.01, 0.001), scan, false);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   // The unmapped wall (1 m from the map, beyond the 0.15 + 3 x 0.01 m +
   // range x 0.003 gate) is left out, the box's own points are measured.
@@ -92,17 +101,39 @@ TEST(ScanMatcher, UncertainSweepKeepsItsPoints) {
   ScanMatcher matcher(Options());
   // Position sigma 0.15 m (below the wide search's 2 voxels): the gate is
   // 0.15 + 0.45 m, more than the field's 0.5 m clamp, so nothing is left out.
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.15, 0.01), scan, false);
+  const ScanMatchResult r =
+      matcher.Match(BoxField(), AtCenter(), Covariance(0.15, 0.01), Covariance(0.15, 0.01), scan, false);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   EXPECT_FALSE(r.searched);
   EXPECT_EQ(r.match.points_unseen, 0);
 }
 
-TEST(ScanMatcher, LineGateDoesNotWidenWithThePrediction) {
+TEST(ScanMatcher, LineGateDoesNotWidenWithPositionSigma) {
   int unmapped = 0;
-  const std::vector<V3> scan = ScanWithUnmappedWall(&unmapped);
-  ScanMatcher matcher(Options());
-  const ScanMatchResult r = matcher.Match(BoxField(), AtCenter(), Covariance(0.15, 0.01), scan, true);
+  // Position sigma 0.15 m widens a sweep's gate past the clamp (above), not
+  // a line's: with 0.0001 rad its gate is 0.15 m + range x 0.0003, under
+  // 0.16 m at the unmapped wall's 6.0-6.2 m, which reads 0.5 m (the clamp).
+  const ScanMatchResult r = MatchLine(Covariance(0.15, 0.0001), Covariance(0.15, 0.0001), &unmapped);
+  ASSERT_TRUE(r.match.ok) << r.match.reason;
+  EXPECT_EQ(r.match.points_unseen, unmapped);
+}
+
+TEST(ScanMatcher, LineGateWidensWithRangeTimesRotationSigma) {
+  int unmapped = 0;
+  // Rotation sigma 0.03 rad moves a point 6 m away by 0.18 m per sigma: the
+  // gate there is 0.15 + 3 x 0.18 = 0.69 m, past the field's 0.5 m clamp, so
+  // the unmapped wall is measured; the box's own points were anyway.
+  const ScanMatchResult r = MatchLine(Covariance(0.001, 0.03), Covariance(0.001, 0.03), &unmapped);
+  ASSERT_TRUE(r.match.ok) << r.match.reason;
+  EXPECT_EQ(r.match.points_unseen, 0);
+}
+
+TEST(ScanMatcher, GateReadsThePoseUncertaintyRelativeToTheMap) {
+  int unmapped = 0;
+  // The same 0.03 rad as above, but all of it the start's, which the map
+  // shares (relative to the map 0.0001 rad): the gate stays at 0.15 m plus
+  // millimetres and the unmapped wall is left out.
+  const ScanMatchResult r = MatchLine(Covariance(0.001, 0.03), Covariance(0.001, 0.0001), &unmapped);
   ASSERT_TRUE(r.match.ok) << r.match.reason;
   EXPECT_EQ(r.match.points_unseen, unmapped);
 }
@@ -113,8 +144,12 @@ TEST(ScanMatcher, NoGateMeasuresEveryPoint) {
   LocalizerOptions o = Options();
   o.max_predicted_distance_m = 0.0;
   ScanMatcher matcher(o);
-  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, false).match.points_unseen, 0);
-  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), scan, true).match.points_unseen, 0);
+  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), Covariance(0.01, 0.001), scan, false)
+                .match.points_unseen,
+            0);
+  EXPECT_EQ(matcher.Match(BoxField(), AtCenter(), Covariance(0.01, 0.001), Covariance(0.01, 0.001), scan, true)
+                .match.points_unseen,
+            0);
 }
 
 }  // namespace
