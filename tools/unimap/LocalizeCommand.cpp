@@ -46,6 +46,7 @@ struct LocalizeCliOptions {
   bool point_to_plane = false;    // points measured against their nearest surface plane (GpfOptions)
   int threads = 1;                // GPF threads
   bool quiet = false;             // no progress line
+  bool trace = false;             // also write trace.csv (as unimap run --trace)
   bool force_payload = false;     // run a dataset recorded for another payload (else an error)
 };
 
@@ -205,7 +206,7 @@ int RunLocalize(const LocalizeCliOptions& options) {
     pipeline::Localizer localizer(localizer_options, platform.plugin.plugin, std::move(prior),
                                   initial.given ? std::optional<Eigen::Isometry3d>(initial.T_map_body) : std::nullopt);
     const pipeline::RunSummary summary =
-        RunSinkToFolder(reader, localizer, out, "trajectory.tum", options.max_duration_s, options.quiet);
+        RunSinkToFolder(reader, localizer, out, "trajectory.tum", options.max_duration_s, options.quiet, options.trace);
 
     RunOutputsInput outputs =
         MakeRunOutputsInput(out, options.platform_file, platform.plugin.plugin->Name(), options.data_dir,
@@ -271,6 +272,8 @@ void AddLocalizeCommand(CLI::App* app) {
                 "docs/localization.md)");
   cmd->add_option("--threads", options->threads, "Threads for particle weighting")->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", options->quiet, "No progress line");
+  cmd->add_flag("--trace", options->trace,
+                "Also write trace.csv, as unimap run --trace: per scan, how the pose was found in the prior map");
   cmd->callback([options]() {
     const SignalGuard guard;  // SIGINT / SIGTERM / SIGHUP: stop, write what was processed, exit 128 + signal
     const int code = SignalGuard::ExitCode(RunLocalize(*options));

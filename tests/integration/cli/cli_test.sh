@@ -147,6 +147,17 @@ case $case_name in
     python3 "$src/scripts/trace_windows.py" "$out/trace.csv" 2 0 6 no_such_column >"$work/$case_name.out" 2>&1 &&
       fail "an unknown column was accepted"
     expect "no column no_such_column in the header" ;;
+  localize_trace)
+    # localize --trace writes run's trace.csv, per scan matched in the prior map.
+    ds="$work/$case_name.ds" out="$work/$case_name.loc"; rm -rf "$ds" "$out"
+    code=$(run simulate --scenario "$src/configs/scenarios/narrow_hallway.yaml" --duration-s 6 --out "$ds" --quiet)
+    [ "$code" = 0 ] || fail "simulate exit $code"
+    code=$(run localize --platform "$src/configs/platforms/rotating_hokuyo.yaml" --data "$ds" --map "$ds/world_map.pcd" \
+      --out "$out" --trace --quiet); [ "$code" = 0 ] || fail "localize exit $code"
+    head -1 "$out/trace.csv" | grep -q '^# time_s,matched,.*,innov_rz$' || fail "header: $(head -1 "$out/trace.csv")"
+    awk -F, 'NR > 1 && $2 == 1 { n++ } END { exit n < 100 }' "$out/trace.csv" || fail "fewer than 100 matched scans"
+    [ "$(wc -l <"$out/trace.csv")" -gt "$(grep -vc '^#' "$out/trajectory.tum")" ] ||
+      fail "fewer trace lines than poses" ;;
   evaluate_map_quality)
     # A map alone, no ground truth: a noise-free 2 m x 2 m plane (0.05 m grid)
     # is all planar with no thickness; the same plane doubled 0.15 m apart is not.
