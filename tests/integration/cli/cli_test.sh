@@ -158,6 +158,29 @@ case $case_name in
     awk -F, 'NR > 1 && $2 == 1 { n++ } END { exit n < 100 }' "$out/trace.csv" || fail "fewer than 100 matched scans"
     [ "$(wc -l <"$out/trace.csv")" -gt "$(grep -vc '^#' "$out/trajectory.tum")" ] ||
       fail "fewer trace lines than poses" ;;
+  measurement_errors_script)
+    # scripts/measurement_errors.py on a synthetic run with known answers: the
+    # truth stands at the origin, the filter's x and y errors are 0.01 k^2;
+    # x's measurement repeats the prediction (slope 1), y's halves it (0.5).
+    python3 -c 'import numpy' 2>/dev/null || exit 77
+    run_dir="$work/$case_name.run"; mkdir -p "$run_dir"
+    awk 'BEGIN { for (i = 0; i <= 20; i++) print i * 0.5, 0, 0, 0, 0, 0, 0, 1 }' >"$work/$case_name.gt.tum"
+    awk 'BEGIN { for (k = 0; k < 10; k++) print k, 0.01 * k * k, 0.01 * k * k, 0, 0, 0, 0, 1 }' \
+      >"$run_dir/trajectory_odometry.tum"
+    { echo "# time_s,matched,corr_x,corr_y,corr_z,innov_x,innov_y,innov_z,meas_sd_x,meas_sd_y,meas_sd_z"
+      awk 'BEGIN { for (k = 0; k < 10; k++) print k ",1,0,0,0,0," (-0.005 * k * k) ",0,0.3,0.3,0.3" }'; } \
+      >"$run_dir/trace.csv"
+    python3 "$src/scripts/measurement_errors.py" "$run_dir" "$work/$case_name.gt.tum" 0 10 >"$work/$case_name.out" 2>&1 ||
+      fail "exit $?: $(cat "$work/$case_name.out")"
+    expect "^# 10 matched scans, 0-10 s$"
+    expect "^x  ([0-9.]+)  \1  \+1\.00  0\.300$"
+    x_sd=$(awk '$1 == "x" { print $2 }' "$work/$case_name.out")
+    y_sd=$(awk '$1 == "y" { print $3 }' "$work/$case_name.out")
+    awk -v x="$x_sd" -v y="$y_sd" 'BEGIN { exit !(x > 0 && (y - x / 2) ^ 2 < 1e-8) }' || fail "y's measurement sd $y_sd is not half of $x_sd"
+    expect "^y  $x_sd  [0-9.]+  \+0\.50  0\.300$"
+    python3 "$src/scripts/measurement_errors.py" "$run_dir" "$work/$case_name.gt.tum" 20 30 >"$work/$case_name.out" 2>&1 &&
+      fail "an empty window was accepted"
+    expect "fewer than 3 matched scans" ;;
   evaluate_map_quality)
     # A map alone, no ground truth: a noise-free 2 m x 2 m plane (0.05 m grid)
     # is all planar with no thickness; the same plane doubled 0.15 m apart is not.
