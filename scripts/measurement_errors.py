@@ -63,7 +63,9 @@ def main():
     for k, t in enumerate(trace['time_s']):
         if trace['matched'][k] < 0.5 or t < t_from or t > t_to or t < tg[0] or t > tg[-1]:
             continue
-        i = int(np.argmin(np.abs(te - t)))
+        # The pose at this scan's time (poses ascend in time): the first at or after t, or the one before.
+        after = int(np.searchsorted(te, t))
+        i = min((j for j in (after - 1, after) if 0 <= j < len(te)), key=lambda j: abs(te[j] - t))
         if abs(te[i] - t) > 1e-4:
             continue  # no pose at this scan's time
         corr = np.array([trace[f'corr_{a}'][k] for a in 'xyz'])
