@@ -34,6 +34,9 @@ bool DistanceMapOptions::IsValid(std::string* why) const {
   if (!PositiveFinite(max_insert_range_m)) {
     return Fail(why, "max_insert_range_m must be positive and finite");
   }
+  if (!(std::isfinite(coarse_beyond_m) && coarse_beyond_m >= 0.0)) {
+    return Fail(why, "coarse_beyond_m must be finite and non-negative (0: off)");
+  }
   if (!(prob_hit > 0.5 && prob_hit < 1.0)) return Fail(why, "prob_hit must lie in (0.5, 1)");
   if (!(prob_miss > 0.0 && prob_miss < 0.5)) return Fail(why, "prob_miss must lie in (0, 0.5)");
   if (!(clamp_min_probability > 0.0 && clamp_min_probability < occupancy_threshold &&
@@ -58,6 +61,7 @@ void DistanceMapOptions::VisitFields(options::FieldVisitor& v) {
   v.Field("max_edt_cells", &max_edt_cells, "count");
   v.Field("max_occupied_voxels", &max_occupied_voxels, "count");
   v.Field("max_insert_range_m", &max_insert_range_m, "m");
+  v.Field("coarse_beyond_m", &coarse_beyond_m, "m");
   v.Field("raycast_free_space", &raycast_free_space, "");
   v.Field("clear_occupied_only", &clear_occupied_only, "");
   v.Field("discretize_rays", &discretize_rays, "");

@@ -9,6 +9,9 @@ namespace unimap::map {
 // Parameters of the occupancy octree and of the distance map kept around the
 // sensor. Resolution and max range come from the platform parameters.
 struct DistanceMapOptions {
+  // Edge of the cells far returns are kept in (voxels; odd, so a cell has a middle voxel).
+  static constexpr int kCoarseCell = 3;
+
   double resolution_m = 0.1;                   // voxel edge of the octree and of the distance grid (m)
   double max_range_m = 15.0;                   // half-size of the box around the sensor that holds distances (m)
   double clamp_distance_m = 1.0;               // distances are exact up to this; farther lookups return it (m)
@@ -22,6 +25,9 @@ struct DistanceMapOptions {
                                                // many voxels (each tracked, ~40 bytes: 400 MB); more is an
                                                // error (the simulated scenarios' maps hold a few 100,000)
   double max_insert_range_m = 30.0;            // rays are cut here; a longer return marks no obstacle (m)
+  double coarse_beyond_m = 0.0;                // returns farther than this from the sensor are kept in cells of
+                                               // kCoarseCell^3 voxels (one surface element per cell, at its
+                                               // middle voxel); 0: every return in its own voxel (m)
   bool raycast_free_space = true;              // rays lower the occupancy of the voxels they cross
                                                // (removes vanished obstacles); false: returns only add
   bool clear_occupied_only = true;             // with raycast_free_space: rays only lower voxels that are

@@ -54,9 +54,10 @@ bool InKeyRange(const Eigen::Vector3i& key) { return (key.array() >= 0).all() &&
 // True when after differs from before enough to recompute the distances to
 // it (SurfaceDistanceLayer::kMoveTolerance).
 bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element& after, float resolution_m) {
-  if (before.planar != after.planar || before.oriented != after.oriented) return true;
+  if (before.planar != after.planar || before.oriented != after.oriented || before.scale != after.scale) return true;
   float change_voxels = (before.mean_m - after.mean_m).norm() / resolution_m;
-  if (after.planar) change_voxels += SurfacePoints::kPatchRadius * before.normal.cross(after.normal).norm();
+  if (after.planar)
+    change_voxels += SurfacePoints::kPatchRadius * after.scale * before.normal.cross(after.normal).norm();
   return change_voxels > SurfaceDistanceLayer::kMoveTolerance;
 }
 
@@ -64,28 +65,28 @@ bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element&
 // passes through the surface of element: always for elements without a
 // plane; for planar ones, when the ray crosses the plane with its end
 // clearly behind it (by more than the voxel centre may misplace the return
-// along the normal: half a voxel per axis, |n|_1 res / 2) within the
-// element's disk. A ray grazing a floor or wall runs through the voxels of
+// along the normal: half a cell per axis, |n|_1 end_scale res / 2) within
+// the element's disk. A ray grazing a floor or wall runs through the voxels of
 // that surface before its return without crossing it (docs/design.md 1.4):
 // those are not misses.
 bool CrossesElement(const SurfacePoints::Element& element, const Eigen::Vector3f& sensor_map,
-                    const Eigen::Vector3f& end_voxel_center_map, float resolution_m) {
+                    const Eigen::Vector3f& end_voxel_center_map, float end_scale, float resolution_m) {
   if (!element.planar) return true;
   const float h_start = element.normal.dot(sensor_map - element.mean_m);
   const float h_end = element.normal.dot(end_voxel_center_map - element.mean_m);
-  const float margin = 0.5f * resolution_m * element.normal.cwiseAbs().sum();
+  const float margin = 0.5f * end_scale * resolution_m * element.normal.cwiseAbs().sum();
   if (!((h_start > 0.0f && h_end < -margin) || (h_start < 0.0f && h_end > margin))) return false;
   const Eigen::Vector3f crossing = sensor_map + (h_start / (h_start - h_end)) * (end_voxel_center_map - sensor_map);
-  const float radius = SurfacePoints::kPatchRadius * resolution_m;
+  const float radius = SurfacePoints::kPatchRadius * element.scale * resolution_m;
   return (crossing - element.mean_m).squaredNorm() <= radius * radius;
 }
 
 }  // namespace
 
 bool SurfaceDistanceLayer::RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
-                                             const Eigen::Vector3f& end_voxel_center_map) const {
-  return site.element == nullptr ||
-         CrossesElement(*site.element, sensor_map, end_voxel_center_map, static_cast<float>(options_.resolution_m));
+                                             const Eigen::Vector3f& end_voxel_center_map, float end_scale) const {
+  return site.element == nullptr || CrossesElement(*site.element, sensor_map, end_voxel_center_map, end_scale,
+                                                   static_cast<float>(options_.resolution_m));
 }
 
 struct SurfaceDistanceLayer::WorkBlock {
@@ -151,20 +152,33 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   // The voxels the returns fell in, with their surface slots.
   std::vector<std::pair<std::uint64_t, SurfacePoints::Slot>> hit;
   hit.reserve(points_map.size());
+  // Far returns go to the middle voxel of their coarse cell (DistanceMapOptions::coarse_beyond_m).
+  constexpr int kCell = DistanceMapOptions::kCoarseCell;
+  const float coarse_sq = static_cast<float>(options_.coarse_beyond_m * options_.coarse_beyond_m);
   for (const Eigen::Vector3f& p : points_map) {
     Eigen::Vector3i key;
     if (!p.allFinite() || !KeyOf(p, &key)) {
       ++counts_.points_out_of_range;
       continue;
     }
+    float scale = 1.0f;
+    if (coarse_sq > 0.0f && (p - sensor_map).squaredNorm() > coarse_sq) {
+      const Eigen::Vector3i middle = (key / kCell) * kCell + Eigen::Vector3i::Constant(kCell / 2);
+      if (InKeyRange(middle)) {
+        key = middle;
+        scale = static_cast<float>(kCell);
+        ++counts_.points_coarse;
+      }
+    }
     const std::uint64_t packed = SurfacePoints::Pack(key);
-    hit.emplace_back(packed, surfaces_.Add(packed, Center(key), p, &sensor_map));
+    hit.emplace_back(packed, surfaces_.Add(packed, Center(key), p, &sensor_map, scale));
     ++counts_.points_added;
   }
   std::sort(hit.begin(), hit.end());  // a deterministic order (a key has one slot)
   hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
   std::vector<std::uint64_t> touched(hit.size());
   std::vector<Site*> touched_sites(hit.size());
+  std::vector<float> touched_scales(hit.size());
   // Hits: one per voxel and scan (as OctoMap counts a discretised scan).
   std::vector<Site*> appeared;
   for (std::size_t i = 0; i < hit.size(); ++i) {
@@ -181,6 +195,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
     touched_sites[i] = &site;
     site.key = key;
     site.element = element;
+    touched_scales[i] = element->scale;
     site.log_odds = std::min(site.log_odds + log_odds_hit_, log_odds_max_);
     site.missed_in = scans_;  // a hit wins over the scan's misses (as in OctoMap)
     if (!site.occupied && site.log_odds > 0.0f) {
@@ -192,7 +207,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   std::vector<Site*> freed;
   if (options_.raycast_free_space) {
     const auto carve = std::chrono::steady_clock::now();
-    Carve(touched, sensor_map, &freed);
+    Carve(touched, touched_scales, sensor_map, &freed);
     counts_.carve_s += SecondsSince(carve);
   }
   counts_.surface_s += SecondsSince(start);
@@ -236,8 +251,8 @@ void SurfaceDistanceLayer::Settle(const Eigen::Vector3i& key) {
   masks.settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
 }
 
-void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map,
-                                 std::vector<Site*>* freed) {
+void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const std::vector<float>& end_scales,
+                                 const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed) {
   // Rays in key units from the sensor to the centre of each return's voxel,
   // that voxel excluded (RayWalk).
   const Eigen::Vector3d origin =
@@ -275,16 +290,17 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
     const std::size_t bit = CellOffset(voxel);
     entry.masks->settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
   };
-  for (const std::uint64_t packed : endpoints) {
-    const Eigen::Vector3i end = Unpack(packed);
+  for (std::size_t e = 0; e < endpoints.size(); ++e) {
+    const Eigen::Vector3i end = Unpack(endpoints[e]);
     const Eigen::Vector3f end_center = Center(end);
+    const float end_scale = end_scales[e];
     WalkRay(origin, end, lookup, [&](const Eigen::Vector3i& voxel) {
       Site& site = *sites_.at(SurfacePoints::Pack(voxel));
       if (site.missed_in == scans_) {  // hit or missed by this scan already
         settle(voxel);
         return false;
       }
-      if (!RayCrossesSurface(site, sensor_map, end_center)) return false;
+      if (!RayCrossesSurface(site, sensor_map, end_center, end_scale)) return false;
       site.missed_in = scans_;
       settle(voxel);
       ++counts_.misses;
@@ -549,15 +565,34 @@ std::vector<Eigen::Vector3f> SurfaceDistanceLayer::VoxelCenters() const {
 }
 
 std::vector<Eigen::Vector3f> SurfaceDistanceLayer::SurfaceMeans() const {
-  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> means;
-  means.reserve(occupied_);
+  std::vector<std::pair<std::uint64_t, const SurfacePoints::Element*>> elements;
+  elements.reserve(occupied_);
   for (const auto& [packed, site] : sites_) {
-    if (site->occupied && site->element != nullptr) means.emplace_back(packed, site->element->mean_m);
+    if (site->occupied && site->element != nullptr) elements.emplace_back(packed, site->element);
   }
-  std::sort(means.begin(), means.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Eigen::Vector3f> out;
-  out.reserve(means.size());
-  for (const auto& [packed, mean] : means) out.push_back(mean);
+  out.reserve(elements.size());
+  const float resolution = static_cast<float>(options_.resolution_m);
+  for (const auto& [packed, element] : elements) {
+    const int half = static_cast<int>(element->scale) / 2;
+    if (half == 0 || !element->planar) {
+      out.push_back(element->mean_m);
+      continue;
+    }
+    // A coarse cell's plane, sampled a voxel apart as its own voxels would
+    // be: the loop-closure matcher reads retired submaps at that density.
+    const Eigen::Vector3f& n = element->normal;
+    int least = 0;
+    n.cwiseAbs().minCoeff(&least);
+    const Eigen::Vector3f u = n.cross(Eigen::Vector3f::Unit(least)).normalized();
+    const Eigen::Vector3f v = n.cross(u);
+    for (int i = -half; i <= half; ++i) {
+      for (int j = -half; j <= half; ++j) {
+        out.push_back(element->mean_m + (static_cast<float>(i) * u + static_cast<float>(j) * v) * resolution);
+      }
+    }
+  }
   return out;
 }
 

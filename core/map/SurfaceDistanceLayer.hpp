@@ -20,6 +20,7 @@ namespace unimap::map {
 // What a SurfaceDistanceLayer did so far.
 struct SurfaceDistanceCounts {
   std::uint64_t points_added = 0;         // returns integrated into the surface elements
+  std::uint64_t points_coarse = 0;        // of those, kept in coarse cells (DistanceMapOptions::coarse_beyond_m)
   std::uint64_t points_out_of_range = 0;  // outside the key range: dropped
   std::uint64_t waves = 0;                // surface voxels whose nearest-voxel waves ran (new or back)
   std::uint64_t cells_claimed = 0;        // cells the waves and refills gave a new nearest voxel
@@ -97,6 +98,8 @@ class SurfaceDistanceLayer {
   std::vector<Eigen::Vector3f> VoxelCenters() const;
   // The mean of the returns in each occupied voxel (map frame), in key
   // order: where the surface is, not where the voxel's centre happens to be.
+  // A planar coarse cell (DistanceMapOptions::coarse_beyond_m) gives
+  // kCoarseCell^2 points of its plane a voxel apart around its mean.
   std::vector<Eigen::Vector3f> SurfaceMeans() const;
   const SurfacePoints& surfaces() const { return surfaces_; }
   SurfaceDistanceCounts counts() const;
@@ -121,11 +124,14 @@ class SurfaceDistanceLayer {
   WorkBlock* BlockAt(const Eigen::Vector3i& key, bool create);
   // The misses of the occupied voxels the rays of a scan (its returns'
   // voxels, from sensor_map) cross; *freed receives those that became free.
-  void Carve(const std::vector<std::uint64_t>& endpoints, const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed);
+  // end_scales[i]: the cell edge (voxels) endpoints[i] stands for.
+  void Carve(const std::vector<std::uint64_t>& endpoints, const std::vector<float>& end_scales,
+             const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed);
   // True when a ray from sensor_map to the return whose voxel centre is
-  // end_voxel_center_map passes through site's surface (a miss), not beside it.
+  // end_voxel_center_map (standing for a cell of end_scale voxels) passes
+  // through site's surface (a miss), not beside it.
   bool RayCrossesSurface(const Site& site, const Eigen::Vector3f& sensor_map,
-                         const Eigen::Vector3f& end_voxel_center_map) const;
+                         const Eigen::Vector3f& end_voxel_center_map, float end_scale) const;
   // Marks the occupied voxel key as hit or missed by the current scan in
   // its block's masks (BlockMasks::settled): Carve's rays skip it.
   void Settle(const Eigen::Vector3i& key);

@@ -64,7 +64,7 @@ SurfacePoints::SurfacePoints(double resolution_m, bool signed_distances, float p
       patch_radius_sq_m2_(patch_radius_m_ * patch_radius_m_) {}
 
 SurfacePoints::Slot SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map,
-                                       const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map) {
+                                       const Eigen::Vector3f& p_map, const Eigen::Vector3f* sensor_map, float scale) {
   if (key != last_key_) {
     const auto it = index_.find(key);
     if (it != index_.end()) {
@@ -92,6 +92,7 @@ SurfacePoints::Slot SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f&
     entry.sum_view *= keep;
   }
   const Eigen::Vector3f d = p_map - voxel_center_map;
+  entry.scale = std::max(entry.scale, scale);
   entry.weight += 1.0f;
   entry.adds_since_fit += 1.0f;
   entry.sum += d;
@@ -106,14 +107,14 @@ SurfacePoints::Slot SurfacePoints::Add(std::uint64_t key, const Eigen::Vector3f&
   return last_slot_;
 }
 
-SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key) const {
+SurfacePoints::Entry SurfacePoints::PooledMoments(std::uint64_t key, int step) const {
   const int kx = static_cast<int>((key >> 32) & 0xffff);
   const int ky = static_cast<int>((key >> 16) & 0xffff);
   const int kz = static_cast<int>(key & 0xffff);
   Entry pooled;
-  for (int dx = -1; dx <= 1; ++dx) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dz = -1; dz <= 1; ++dz) {
+  for (int dx = -step; dx <= step; dx += step) {
+    for (int dy = -step; dy <= step; dy += step) {
+      for (int dz = -step; dz <= step; dz += step) {
         const Eigen::Vector3i neighbor(kx + dx, ky + dy, kz + dz);
         if ((neighbor.array() < 0).any() || (neighbor.array() > 0xffff).any()) continue;
         const Entry* found = Lookup(Pack(neighbor));
@@ -152,6 +153,7 @@ const SurfacePoints::Element* SurfacePoints::RefreshEntry(Entry* found, std::uin
                                                           const Eigen::Vector3f& voxel_center_map) {
   Entry& entry = *found;
   entry.element.mean_m = voxel_center_map + entry.sum / entry.weight;
+  entry.element.scale = entry.scale;
   const float refit_after = entry.weight >= kMaxWeight ? kMaxWeight : kRefitFraction * entry.weight;
   const bool refit = !entry.has_element || entry.adds_since_fit >= refit_after;
   entry.has_element = true;
@@ -161,7 +163,8 @@ const SurfacePoints::Element* SurfacePoints::RefreshEntry(Entry* found, std::uin
   element.planar = false;
   element.oriented = false;
   element.normal.setZero();
-  const Entry pooled = PooledMoments(key);
+  // A coarse cell pools the cells around it, as a voxel its neighbours.
+  const Entry pooled = PooledMoments(key, static_cast<int>(entry.scale));
   if (pooled.weight < kMinPlaneWeight) return &entry.element;
   // Scatter about the pooled mean: E[d d^T] - mean mean^T.
   const Eigen::Vector3f mean = pooled.sum / pooled.weight;

@@ -36,6 +36,8 @@ class SurfacePoints {
     Eigen::Vector3f normal = Eigen::Vector3f::Zero();  // unit plane normal when planar
     bool planar = false;                               // the returns span a plane: distances are to the disk
     bool oriented = false;                             // normal points to the side the sensor saw the surface from
+    float scale = 1.0f;                                // cell edge in voxels the returns came from (1, or
+                                                       // DistanceMapOptions' coarse cells): scales the disk
   };
 
   // Returns counted in full before the average becomes exponential.
@@ -74,9 +76,12 @@ class SurfacePoints {
   using Slot = std::uint32_t;
   // Adds the return p_map to the voxel key whose centre is voxel_center_map.
   // sensor_map (null when unknown, e.g. prior point clouds) orients the plane.
+  // scale > 1: the return stands for a cell of scale^3 voxels centred on the
+  // voxel (it may lie up to scale / 2 voxels from its centre); the element's
+  // disk then reaches scale times as far (Element::scale, the largest given).
   // The voxel's element changes only on Refresh. Returns the voxel's slot.
   Slot Add(std::uint64_t key, const Eigen::Vector3f& voxel_center_map, const Eigen::Vector3f& p_map,
-           const Eigen::Vector3f* sensor_map);
+           const Eigen::Vector3f* sensor_map, float scale = 1.0f);
   // Updates the element of key: its mean always; its plane (fitted to its
   // and its neighbours' returns) when none was fitted yet or the voxel got
   // kRefitFraction of its weight (a full kMaxWeight once the average is
@@ -101,10 +106,10 @@ class SurfacePoints {
     // Distance to a disk: |height| above it, sqrt(height^2 + (lateral - radius)^2) beside it.
     const float height = r.dot(element.normal);
     const float lateral_sq = std::max(0.0f, r.squaredNorm() - height * height);
-    if (lateral_sq <= patch_radius_sq_m2_) {
+    if (lateral_sq <= patch_radius_sq_m2_ * element.scale * element.scale) {
       return signed_ && element.oriented && height < 0.0f ? height : std::abs(height);  // negative behind
     }
-    const float outside = std::sqrt(lateral_sq) - patch_radius_m_;
+    const float outside = std::sqrt(lateral_sq) - patch_radius_m_ * element.scale;
     return std::sqrt(height * height + outside * outside);
   }
 
@@ -124,12 +129,13 @@ class SurfacePoints {
     Eigen::Matrix<float, 6, 1> sum_sq = Eigen::Matrix<float, 6, 1>::Zero();  // xx xy xz yy yz zz
     Eigen::Vector3f sum_view = Eigen::Vector3f::Zero();                      // sum of unit vectors to the sensor
     float adds_since_fit = 0.0f;                                             // returns added since the plane fit
+    float scale = 1.0f;                                                      // largest scale given to Add
     bool has_element = false;                                                // element is valid
     Element element;
   };
 
-  // Moments of key and its neighbours, relative to key's voxel centre.
-  Entry PooledMoments(std::uint64_t key) const;
+  // Moments of key and its neighbours step voxels away, relative to key's voxel centre.
+  Entry PooledMoments(std::uint64_t key, int step) const;
 
   float resolution_m_;
   bool signed_;               // SignedDistance is negative behind oriented disks

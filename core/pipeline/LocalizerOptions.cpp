@@ -106,6 +106,11 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // the nearest surface the map does hold, pull the pose back. 3D sweeps
   // widen the gate by the prediction's own uncertainty (ScanMatcher).
   o.max_predicted_distance_m = 1.5 * core.distance_map_resolution_m;
+  // Returns farther than 100 voxels, where a voxel subtends less than 0.01
+  // rad from the sensor, are kept in 3-voxel cells: outdoors they are most
+  // of what a sweep maps, and each cost a surface element and rays at full
+  // resolution (docs/mapping.md, "Far returns in coarse cells").
+  o.map.coarse_beyond_m = 100.0 * core.distance_map_resolution_m;
   // Gauss-Newton refinement of every match (PoseRefiner): the plain GPF's
   // Monte-Carlo noise made a static hallway run diverge.
   o.gpf.refine_iterations = 5;
@@ -146,6 +151,7 @@ LocalizerOptions LocalizerOptions::ForPriorMap(const CoreParameters& core) {
   // with for speed is not needed.
   o.map.resolution_m = std::min(o.map.resolution_m, kPriorMapResolutionM);
   o.gpf.voxel_size_m = o.map.resolution_m;
+  o.map.coarse_beyond_m = 0.0;  // a prior map's points have no sensor to be far from
   // The default clamp (unimap localize clamps a .pcd map's field at the
   // particle filter's clamp itself; a .bt map's resolution may be coarser).
   o.map.clamp_distance_m = map::DistanceMapOptions{}.clamp_distance_m;
