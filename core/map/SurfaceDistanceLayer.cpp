@@ -56,8 +56,9 @@ bool InKeyRange(const Eigen::Vector3i& key) { return (key.array() >= 0).all() &&
 bool Differs(const SurfacePoints::Element& before, const SurfacePoints::Element& after, float resolution_m) {
   if (before.planar != after.planar || before.oriented != after.oriented || before.scale != after.scale) return true;
   float change_voxels = (before.mean_m - after.mean_m).norm() / resolution_m;
-  if (after.planar)
+  if (after.planar) {
     change_voxels += SurfacePoints::kPatchRadius * after.scale * before.normal.cross(after.normal).norm();
+  }
   return change_voxels > SurfaceDistanceLayer::kMoveTolerance;
 }
 
@@ -176,14 +177,11 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   }
   std::sort(hit.begin(), hit.end());  // a deterministic order (a key has one slot)
   hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
-  std::vector<std::uint64_t> touched(hit.size());
   std::vector<Site*> touched_sites(hit.size());
-  std::vector<float> touched_scales(hit.size());
   // Hits: one per voxel and scan (as OctoMap counts a discretised scan).
   std::vector<Site*> appeared;
   for (std::size_t i = 0; i < hit.size(); ++i) {
     const std::uint64_t packed = hit[i].first;
-    touched[i] = packed;
     const Eigen::Vector3i key = Unpack(packed);
     const SurfacePoints::Element* element = surfaces_.Refresh(hit[i].second, packed, Center(key));
     auto found = sites_.find(packed);
@@ -195,7 +193,6 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
     touched_sites[i] = &site;
     site.key = key;
     site.element = element;
-    touched_scales[i] = element->scale;
     site.log_odds = std::min(site.log_odds + log_odds_hit_, log_odds_max_);
     site.missed_in = scans_;  // a hit wins over the scan's misses (as in OctoMap)
     if (!site.occupied && site.log_odds > 0.0f) {
@@ -207,7 +204,7 @@ void SurfaceDistanceLayer::Insert(const std::vector<Eigen::Vector3f>& points_map
   std::vector<Site*> freed;
   if (options_.raycast_free_space) {
     const auto carve = std::chrono::steady_clock::now();
-    Carve(touched, touched_scales, sensor_map, &freed);
+    Carve(touched_sites, sensor_map, &freed);
     counts_.carve_s += SecondsSince(carve);
   }
   counts_.surface_s += SecondsSince(start);
@@ -251,8 +248,8 @@ void SurfaceDistanceLayer::Settle(const Eigen::Vector3i& key) {
   masks.settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
 }
 
-void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, const std::vector<float>& end_scales,
-                                 const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed) {
+void SurfaceDistanceLayer::Carve(const std::vector<Site*>& ends, const Eigen::Vector3f& sensor_map,
+                                 std::vector<Site*>* freed) {
   // Rays in key units from the sensor to the centre of each return's voxel,
   // that voxel excluded (RayWalk).
   const Eigen::Vector3d origin =
@@ -290,10 +287,10 @@ void SurfaceDistanceLayer::Carve(const std::vector<std::uint64_t>& endpoints, co
     const std::size_t bit = CellOffset(voxel);
     entry.masks->settled[bit / 64] |= std::uint64_t{1} << (bit % 64);
   };
-  for (std::size_t e = 0; e < endpoints.size(); ++e) {
-    const Eigen::Vector3i end = Unpack(endpoints[e]);
+  for (const Site* end_site : ends) {
+    const Eigen::Vector3i end = end_site->key;
     const Eigen::Vector3f end_center = Center(end);
-    const float end_scale = end_scales[e];
+    const float end_scale = end_site->element->scale;  // the cell the return stands for
     WalkRay(origin, end, lookup, [&](const Eigen::Vector3i& voxel) {
       Site& site = *sites_.at(SurfacePoints::Pack(voxel));
       if (site.missed_in == scans_) {  // hit or missed by this scan already

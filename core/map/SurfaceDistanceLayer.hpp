@@ -122,11 +122,10 @@ class SurfaceDistanceLayer {
   bool KeyOf(const Eigen::Vector3f& p_map, Eigen::Vector3i* key) const;
   Eigen::Vector3f Center(const Eigen::Vector3i& key) const;
   WorkBlock* BlockAt(const Eigen::Vector3i& key, bool create);
-  // The misses of the occupied voxels the rays of a scan (its returns'
-  // voxels, from sensor_map) cross; *freed receives those that became free.
-  // end_scales[i]: the cell edge (voxels) endpoints[i] stands for.
-  void Carve(const std::vector<std::uint64_t>& endpoints, const std::vector<float>& end_scales,
-             const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed);
+  // The misses of the occupied voxels the rays of a scan (to the sites of
+  // its returns, ends, from sensor_map) cross; *freed receives those that
+  // became free.
+  void Carve(const std::vector<Site*>& ends, const Eigen::Vector3f& sensor_map, std::vector<Site*>* freed);
   // True when a ray from sensor_map to the return whose voxel centre is
   // end_voxel_center_map (standing for a cell of end_scale voxels) passes
   // through site's surface (a miss), not beside it.

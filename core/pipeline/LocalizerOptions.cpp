@@ -109,7 +109,7 @@ LocalizerOptions LocalizerOptions::FromPlatform(const CoreParameters& core) {
   // Returns farther than 100 voxels, where a voxel subtends less than 0.01
   // rad from the sensor, are kept in 3-voxel cells: outdoors they are most
   // of what a sweep maps, and each cost a surface element and rays at full
-  // resolution (docs/mapping.md, "Far returns in coarse cells").
+  // resolution (docs/mapping.md, "Fourth round: far returns in coarse cells").
   o.map.coarse_beyond_m = 100.0 * core.distance_map_resolution_m;
   // Gauss-Newton refinement of every match (PoseRefiner): the plain GPF's
   // Monte-Carlo noise made a static hallway run diverge.
