@@ -181,6 +181,36 @@ case $case_name in
     python3 "$src/scripts/measurement_errors.py" "$run_dir" "$work/$case_name.gt.tum" 20 30 >"$work/$case_name.out" 2>&1 &&
       fail "an empty window was accepted"
     expect "fewer than 3 matched scans" ;;
+  tilt_passes_script)
+    # scripts/tilt_passes.py on a synthetic static tilting rig with a known
+    # answer: up 0 -> 60 deg in 0.1 deg lines, then down 60 -> 40 deg with
+    # every angle of the way down reported 0.5 deg too high; each line's
+    # ranges are a smooth function of its true tilt.
+    python3 -c 'import numpy' 2>/dev/null || exit 77
+    ds="$work/$case_name.ds"; rm -rf "$ds"; mkdir -p "$ds"
+    python3 - "$ds" <<'PY' || fail "could not write the synthetic rig"
+import math, struct, sys
+folder = sys.argv[1]
+true_deg = [i / 10 for i in range(601)] + [60 - i / 10 for i in range(1, 201)]
+reported = true_deg[:601] + [a + 0.5 for a in true_deg[601:]]
+with open(folder + '/scans.bin', 'wb') as f, open(folder + '/encoder.csv', 'w') as enc:
+    f.write(b'UNIMAPSC' + struct.pack('<I', 1))
+    enc.write('# time_s angle_rad\n')
+    for k, (tilt, angle) in enumerate(zip(true_deg, reported)):
+        ranges = [1.5 + 0.3 * math.sin(0.2 * tilt + 0.05 * b) for b in range(181)]
+        payload = struct.pack('<6dI', 0.1 * k, -1.5, 0.0167, 1e-4, 0.02, 5.6, 181)
+        payload += struct.pack('<181f', *ranges) + struct.pack('<I', 0)
+        f.write(struct.pack('<BI', 1, len(payload)) + payload)
+        enc.write(f'{0.1 * k} {math.radians(angle)}\n')
+PY
+    python3 "$src/scripts/tilt_passes.py" "$ds" >"$work/$case_name.out" 2>&1 || fail "exit $?: $(cat "$work/$case_name.out")"
+    expect "^# 801 lines, up 0.00 -> 60.40 deg, down to 40.50 deg$"
+    expect "^ +45-50 +50 +\+0\.500 +0\.0$"
+    expect "^ +50-55 +50 +\+0\.500 +0\.0$"
+    grep -Eq "^ +(0-5|35-40) " "$work/$case_name.out" && fail "a bin without a way down: $(cat "$work/$case_name.out")"
+    rm -f "$ds/encoder.csv"; echo "# time_s angle_rad" >"$ds/encoder.csv"; echo "0 0" >>"$ds/encoder.csv"
+    python3 "$src/scripts/tilt_passes.py" "$ds" >"$work/$case_name.out" 2>&1 && fail "a short encoder.csv was accepted"
+    expect "801 lines but 1 angles" ;;
   evaluate_map_quality)
     # A map alone, no ground truth: a noise-free 2 m x 2 m plane (0.05 m grid)
     # is all planar with no thickness; the same plane doubled 0.15 m apart is not.
