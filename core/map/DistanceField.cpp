@@ -299,11 +299,17 @@ bool DistanceField::InBoxStencil(int ix, int iy, int iz, float* c) const {
 }
 
 void DistanceField::DistancesTrilinear(const Eigen::Vector3f* points_map, int n, float* out) const {
-  // Consecutive points in one stencil (the particles of one scan point)
-  // reuse its eight values; the arithmetic is DistanceTrilinear's.
-  int last_x = -1, last_y = -1, last_z = -1;
-  bool last_stored = false;
-  float c[8];
+  // The particles of one scan point fall in a few neighbouring stencils:
+  // each stencil's eight values are loaded once into a direct-mapped cache
+  // indexed by the low two bits of its cell per axis (a 4^3 neighbourhood
+  // never collides), so a point's particles reuse them in any order. The
+  // arithmetic is DistanceTrilinear's: the same values.
+  struct Stencil {
+    int x = -1, y = -1, z = -1;  // first cell; -1: empty (cells are >= 0)
+    bool stored = false;         // InBoxStencil's result
+    float c[8];
+  };
+  Stencil cache[64];
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3f& p_map = points_map[i];
     const float ux = (p_map.x() - origin_m_.x()) * inv_resolution_ - 0.5f;
@@ -317,13 +323,15 @@ void DistanceField::DistancesTrilinear(const Eigen::Vector3f* points_map, int n,
     const int ix = static_cast<int>(ux);
     const int iy = static_cast<int>(uy);
     const int iz = static_cast<int>(uz);
-    if (ix != last_x || iy != last_y || iz != last_z) {
-      last_stored = InBoxStencil(ix, iy, iz, c);
-      last_x = ix;
-      last_y = iy;
-      last_z = iz;
+    Stencil& stencil = cache[((ix & 3) << 4) | ((iy & 3) << 2) | (iz & 3)];
+    if (ix != stencil.x || iy != stencil.y || iz != stencil.z) {
+      stencil.stored = InBoxStencil(ix, iy, iz, stencil.c);
+      stencil.x = ix;
+      stencil.y = iy;
+      stencil.z = iz;
     }
-    if (!last_stored) {
+    const float* c = stencil.c;
+    if (!stencil.stored) {
       out[i] = clamp_m_;
       continue;
     }

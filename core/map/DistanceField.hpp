@@ -108,8 +108,8 @@ class DistanceField {
   // (see kMaxCrossingSum), so a surface between two centres reads zero.
   float DistanceTrilinear(const Eigen::Vector3f& p_map, Eigen::Vector3f* gradient_map) const;
   // out[i] = DistanceTrilinear(points_map[i], nullptr) for i < n, the same
-  // values; faster when consecutive points share a stencil (the particles
-  // of one scan point).
+  // values; faster when the points fall in a few neighbouring stencils, in
+  // any order (the particles of one scan point).
   void DistancesTrilinear(const Eigen::Vector3f* points_map, int n, float* out) const;
 
   // Attaches the planes of the cells' nearest surface elements (same grid);

@@ -1,5 +1,6 @@
 #include "map/DistanceField.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -254,7 +255,9 @@ TEST(DistanceField, TrilinearAcrossABlockBoundaryUsesBothBlocks) {
 // The batch lookup is the single lookup, value for value: clusters of
 // points (the particles of one scan point) in and across stencils, blocks,
 // missing blocks, the box's edge and outside it; signed fields with jumping
-// stencils too.
+// stencils too. The clusters also go in shuffled, so that stencils cached
+// for one point are reused by later ones and evicted by stencils whose
+// cells share their low bits.
 TEST(DistanceField, BatchTrilinearEqualsSingleLookups) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> box(-0.3f, 1.9f);
@@ -265,6 +268,9 @@ TEST(DistanceField, BatchTrilinearEqualsSingleLookups) {
     for (int k = 0; k < 20; ++k) points.push_back(center + V3(spread(rng), spread(rng), spread(rng)));
   }
   points.push_back(V3(std::nanf(""), 0.5f, 0.5f));
+  std::vector<V3> shuffled = points;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  points.insert(points.end(), shuffled.begin(), shuffled.end());
   for (const DistanceField& field : {TwoBlockField(), SignedField(Jump), SignedField(Crossing), LinearField()}) {
     std::vector<float> batch(points.size());
     field.DistancesTrilinear(points.data(), static_cast<int>(points.size()), batch.data());
