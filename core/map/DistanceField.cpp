@@ -221,14 +221,6 @@ void DistanceField::FlagJumpingStencils(std::vector<std::uint16_t>* cells_out) c
   }
 }
 
-std::uint16_t DistanceField::Quantise(float distance_m, float clamp_m) {
-  if (!(distance_m < clamp_m)) return kMaxSteps;  // also NaN
-  if (distance_m <= 0.0f) return 0;
-  // Round half up (the value is positive): cheaper than std::round in export loops.
-  const float steps = distance_m / clamp_m * static_cast<float>(kMaxSteps) + 0.5f;
-  return static_cast<std::uint16_t>(std::min(steps, static_cast<float>(kMaxSteps)));
-}
-
 void DistanceField::SetPlanes(CellPlanes planes) {
   if (planes.size() != CellCount()) {
     throw InputError("DistanceField: " + std::to_string(planes.size()) + " cell planes for " +

@@ -75,7 +75,14 @@ class DistanceField {
                 std::vector<std::shared_ptr<const Block>> blocks, std::uint64_t sequence);
 
   // The 16-bit code of a distance (values >= clamp_m map to kMaxSteps).
-  static std::uint16_t Quantise(float distance_m, float clamp_m);
+  // Inline: the map's export calls it for every recomputed cell.
+  static std::uint16_t Quantise(float distance_m, float clamp_m) {
+    if (!(distance_m < clamp_m)) return kMaxSteps;  // also NaN
+    if (distance_m <= 0.0f) return 0;
+    // Round half up (the value is positive): cheaper than std::round in export loops.
+    const float steps = distance_m / clamp_m * static_cast<float>(kMaxSteps) + 0.5f;
+    return static_cast<std::uint16_t>(std::min(steps, static_cast<float>(kMaxSteps)));
+  }
   // The kSigned code of a signed distance: 15 bits shifted left, bit 0
   // clear (saturates at +-clamp_m; NaN maps to +clamp_m).
   static std::uint16_t QuantiseSigned(float signed_distance_m, float clamp_m) {
