@@ -321,6 +321,8 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
         matched = true;
       }
     }
+    tracking_.Add(t_ref, match.ok ? matched_scan.inliers : 0.0);
+    stats_.tracking = tracking_.report();
   }
   ++(static_body ? stats_.scans_static : matched ? stats_.scans_matched : stats_.scans_unmatched);
   const Eigen::Isometry3d T_map_body = estimation::ApplyPoseError(T_predicted, correction);

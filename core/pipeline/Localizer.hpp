@@ -21,6 +21,7 @@
 #include "pipeline/ScanAccumulator.hpp"
 #include "pipeline/ScanMatcher.hpp"
 #include "pipeline/StageTimes.hpp"
+#include "pipeline/TrackingMonitor.hpp"
 #include "unimap/EncoderTrack.hpp"
 #include "unimap/PayloadPlugin.hpp"
 
@@ -60,7 +61,8 @@ struct LocalizerStats {
   std::size_t map_errors = 0;          // map updates refused (pose outside the map's range): skipped
   std::optional<estimation::InitialAttitude> initial_attitude;  // used for a given initial pose
   std::vector<std::string> messages;                            // the first few skip reasons, for the log
-  StageTimes times;  // the localiser's stages (map stages: the map's UpdateTimes)
+  TrackingReport tracking;  // whether the scans stopped matching the map (TrackingMonitor)
+  StageTimes times;         // the localiser's stages (map stages: the map's UpdateTimes)
 };
 
 // Odometry-mode localiser (docs/design.md 1.1-1.3): IMU -> ESKF prediction; each
@@ -133,6 +135,7 @@ class Localizer : public EventSink {
   double last_scan_end_s_ = -1e300;
   std::vector<ScanPose> poses_;
   LocalizerStats stats_;
+  TrackingMonitor tracking_;  // fed every scan tried against a map
 };
 
 }  // namespace unimap::pipeline

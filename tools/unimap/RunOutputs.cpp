@@ -13,8 +13,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iomanip>
 #include <iostream>
 #include <limits>
+#include <sstream>
 
 #include "estimation/So3.hpp"
 #include "eval/AtomicFile.hpp"
@@ -78,6 +80,20 @@ WorldFrameErrors ComputeWorldFrameErrors(const std::vector<StampedPose>& estimat
   return e;
 }
 
+// The warning of a run whose scans stopped matching the map (empty when they did not).
+std::string TrackingWarning(const pipeline::TrackingReport& t) {
+  if (!t.lost()) return "";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3) << "the scans stopped matching the map at " << t.first_poor_time_s
+       << " s (" << std::setprecision(1) << t.first_poor_time_s - t.first_time_s << " s after matching began): over "
+       << pipeline::TrackingMonitor::kWindowS << " s less than " << std::setprecision(0)
+       << 100.0 * pipeline::TrackingMonitor::kMinInlierShare << " % of their points lay near it ("
+       << std::setprecision(1) << t.poor_s << " s in all, worst " << std::setprecision(2) << t.worst_window_share
+       << "). The odometry was probably lost there; the trajectory and the map after it are unreliable"
+          " (run.json: localizer.tracking).";
+  return text.str();
+}
+
 Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   Json o = Json::object();
   o["imu_samples"] = s.imu_samples;
@@ -98,6 +114,19 @@ Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   o["map_insertions"] = s.map_insertions;
   o["map_errors"] = s.map_errors;
   o["messages"] = s.messages;
+  const pipeline::TrackingReport& t = s.tracking;
+  Json tracking = Json::object();
+  tracking["window_s"] = pipeline::TrackingMonitor::kWindowS;
+  tracking["min_inlier_share"] = pipeline::TrackingMonitor::kMinInlierShare;
+  tracking["scans"] = t.scans;
+  tracking["first_time_s"] = t.scans > 0 ? Json(t.first_time_s) : Json(nullptr);
+  tracking["lost"] = t.lost();
+  tracking["first_poor_time_s"] = t.lost() ? Json(t.first_poor_time_s) : Json(nullptr);
+  tracking["poor_s"] = t.poor_s;
+  tracking["worst_window_inlier_share"] = t.worst_window_time_s >= 0.0 ? Json(t.worst_window_share) : Json(nullptr);
+  tracking["worst_window_time_s"] = t.worst_window_time_s >= 0.0 ? Json(t.worst_window_time_s) : Json(nullptr);
+  tracking["messages"] = t.lost() ? std::vector<std::string>{TrackingWarning(t)} : std::vector<std::string>{};
+  o["tracking"] = tracking;
   return o;
 }
 
@@ -201,6 +230,7 @@ int WriteRunOutputs(const RunOutputsInput& in) {
             << summary.data_duration_s << " s in " << summary.processing_s << " s: " << summary.realtime_factor
             << "x real time, peak RSS " << summary.peak_rss_mb << " MiB\n";
   for (const auto& message : in.stats.messages) std::cout << "  note: " << message << '\n';
+  if (in.stats.tracking.lost()) std::cout << "  warning: " << TrackingWarning(in.stats.tracking) << '\n';
   if (in.world_frame_errors && world_errors.poses > 0) {
     std::cout << "  position_rmse_m = " << world_errors.position_rmse_m
               << "  (unaligned: estimate and truth share the map frame)\n"

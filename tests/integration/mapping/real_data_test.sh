@@ -83,6 +83,15 @@ case "$case_name" in
     for f in trajectory.tum trajectory_odometry.tum map.ply; do
       cmp -s "$work/out/$f" "$work/direct/$f" || fail "$f differs between the converted and the direct run"
     done
+    # Mapped with the rotating Hokuyo's platform (not this rig's: another
+    # scanner, a servo nodding through 60 deg instead of a motor turning, an
+    # unknown extrinsic), the RPLIDAR's lines do not match the map they
+    # build (none of their points within 1.5 voxels of it after the first
+    # seconds, a predicted position sigma of metres): the run says so.
+    if [ "$case_name" = nodding_rplidar ]; then
+      grep -q '^ *"lost": true,\{0,1\}$' "$work/direct/run.json" || fail "run.json: tracking not judged lost"
+      expect "warning: the scans stopped matching the map at [0-9.]+ s"
+    fi
     # The tilting stand does not move: --motion static places its slices
     # without matching them, and a run of placed scans is no "nothing matched" error.
     if [ "$case_name" = tilting_room ]; then

@@ -33,6 +33,10 @@ echo "  drift_percent=$(json_number "$metrics" drift_percent)" \
      "max_abs_error_m=[$(json_array "$metrics" max_abs_error_m | paste -sd ' ')]" \
      "mean_abs_rot_error_deg=[$(json_array "$metrics" mean_abs_rot_error_deg | paste -sd ' ')]"
 
+# Tracking never judged lost on a scenario its defaults hold (robustness.md,
+# "Telling that the odometry was lost").
+grep -q '^ *"lost": false,\{0,1\}$' "$work/out/run.json" || fail "run.json: localizer.tracking says lost ($(grep -m1 'scans stopped matching' "$work/out/run.json"))"
+
 case $case_name in
   tunnel)
     # The paper's tunnel, rotating Hokuyo, 15 minutes: drift, rotation and

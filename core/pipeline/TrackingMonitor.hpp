@@ -1,0 +1,53 @@
+#pragma once
+#include <cstddef>
+#include <deque>
+
+namespace unimap::pipeline {
+
+// What TrackingMonitor saw over a run.
+struct TrackingReport {
+  std::size_t scans = 0;              // scans fed (matched, or tried against a map and failed)
+  double first_time_s = -1.0;         // the first one's time (-1: none)
+  double first_poor_time_s = -1.0;    // first scan whose window was poor (-1: none)
+  double poor_s = 0.0;                // time covered by poor windows (s)
+  double worst_window_share = 1.0;    // lowest full window's mean inlier share (1: no full window)
+  double worst_window_time_s = -1.0;  // the scan that closed it (-1: no full window)
+  bool lost() const { return first_poor_time_s >= 0.0; }
+};
+
+// Tells, without ground truth, when the odometry stopped explaining the
+// scans: the mean inlier share (ScanMatchResult::inliers: the share of a
+// scan's points within the reacquisition's inlier distance of the map at
+// the matched pose) of the scans in the last kWindowS seconds falls below
+// kMinInlierShare. A scan tried against a map but not matched counts 0.
+// A window is judged once it spans kWindowS and holds kMinScans scans,
+// so a short recording (fewer seconds than that) is never judged.
+// docs/robustness.md ("Telling that the odometry was lost") has the
+// measurements behind the two values.
+class TrackingMonitor {
+ public:
+  // The window (s): a few seconds of a run that keeps tracking dip only briefly.
+  static constexpr double kWindowS = 2.0;
+  // Poor below this mean share: most of the scan off the map (ScanMatcher's
+  // poor-match share for sweeps).
+  static constexpr double kMinInlierShare = 0.5;
+  // A window needs this many scans to be judged.
+  static constexpr std::size_t kMinScans = 5;
+
+  // One scan at time_s (non-decreasing; an earlier time restarts the
+  // window) with its inlier share in [0, 1] (clamped).
+  void Add(double time_s, double inlier_share);
+  const TrackingReport& report() const { return report_; }
+
+ private:
+  struct Sample {
+    double time_s;
+    double share;
+  };
+  std::deque<Sample> window_;
+  bool previous_poor_ = false;
+  double previous_time_s_ = 0.0;
+  TrackingReport report_;
+};
+
+}  // namespace unimap::pipeline
