@@ -321,7 +321,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
         matched = true;
       }
     }
-    tracking_.Add(t_ref, match.ok ? matched_scan.inliers : 0.0);
+    tracking_.Add(t_ref, matched ? matched_scan.inliers : 0.0);
     stats_.tracking = tracking_.report();
   }
   ++(static_body ? stats_.scans_static : matched ? stats_.scans_matched : stats_.scans_unmatched);

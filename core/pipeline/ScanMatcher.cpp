@@ -91,7 +91,10 @@ ScanMatchResult ScanMatcher::Match(const std::shared_ptr<const map::DistanceFiel
   out.match = gpf_.MatchFrom(T_predicted, out.inflation * predicted_covariance, points_body, query, gate_m, found.error,
                              gate_per_range);
   out.reacquired = out.match.ok;
-  out.inliers = found.inliers_found;
+  // The share at the refined pose (the search's own share otherwise).
+  out.inliers = out.match.ok ? reacquirer_.InlierShare(
+                                   *field, estimation::ApplyPoseError(T_predicted, out.match.posterior_mean), subset)
+                             : found.inliers_found;
   return out;
 }
 

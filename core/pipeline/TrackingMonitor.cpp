@@ -11,17 +11,21 @@ void TrackingMonitor::Add(double time_s, double inlier_share) {
   if (!window_.empty() && time_s < window_.back().time_s) {  // out of order: start again
     window_.clear();
     previous_poor_ = false;
+    start_s_ = time_s;
   }
-  if (report_.scans++ == 0) report_.first_time_s = time_s;
-  // A poor window goes on until this scan: the time between them counts as poor.
-  if (previous_poor_) report_.poor_s += time_s - previous_time_s_;
-  window_.push_back({time_s, share});
-  // Keep the scans of the last kWindowS seconds (the oldest exactly at the edge included).
-  while (window_.size() > 1 && window_[1].time_s <= time_s - kWindowS) window_.pop_front();
+  if (report_.scans++ == 0) {
+    report_.first_time_s = time_s;
+    start_s_ = time_s;
+  }
+  // A poor window goes on until the next scan (for at most a window).
+  if (previous_poor_) report_.poor_s += std::min(time_s - previous_time_s_, kWindowS);
   previous_time_s_ = time_s;
-  const bool full = time_s - window_.front().time_s >= kWindowS && window_.size() >= kMinScans;
   previous_poor_ = false;
-  if (!full) return;
+  // The scans of the last kWindowS seconds: (time_s - kWindowS, time_s].
+  window_.push_back({time_s, share});
+  while (window_.front().time_s <= time_s - kWindowS) window_.pop_front();
+  // Judged once the monitor has run for a window and the window holds enough scans.
+  if (time_s - start_s_ < kWindowS || window_.size() < kMinScans) return;
   // Summed afresh (a window holds a few dozen scans): a running sum would
   // keep rounding residue where every share is 0.
   double sum = 0.0;

@@ -6,22 +6,25 @@ namespace unimap::pipeline {
 
 // What TrackingMonitor saw over a run.
 struct TrackingReport {
-  std::size_t scans = 0;              // scans fed (matched, or tried against a map and failed)
+  std::size_t scans = 0;              // scans fed (every scan tried against a map)
   double first_time_s = -1.0;         // the first one's time (-1: none)
   double first_poor_time_s = -1.0;    // first scan whose window was poor (-1: none)
-  double poor_s = 0.0;                // time covered by poor windows (s)
-  double worst_window_share = 1.0;    // lowest full window's mean inlier share (1: no full window)
-  double worst_window_time_s = -1.0;  // the scan that closed it (-1: no full window)
+  double poor_s = 0.0;                // from each poor window's scan to the next scan fed, at most kWindowS each (s)
+  double worst_window_share = 1.0;    // lowest judged window's mean inlier share (1: none judged)
+  double worst_window_time_s = -1.0;  // the scan that closed it (-1: none judged)
   bool lost() const { return first_poor_time_s >= 0.0; }
 };
 
 // Tells, without ground truth, when the odometry stopped explaining the
 // scans: the mean inlier share (ScanMatchResult::inliers: the share of a
 // scan's points within the reacquisition's inlier distance of the map at
-// the matched pose) of the scans in the last kWindowS seconds falls below
-// kMinInlierShare. A scan tried against a map but not matched counts 0.
-// A window is judged once it spans kWindowS and holds kMinScans scans,
-// so a short recording (fewer seconds than that) is never judged.
+// the matched pose) of the scans in the window (time - kWindowS, time]
+// falls below kMinInlierShare. A scan tried against a map whose match was
+// not used counts 0. Windows are judged once the monitor has run for
+// kWindowS and when they hold kMinScans scans, so a short recording (less
+// than kWindowS) or sparse scans are never judged. The poor time starts
+// when the mean falls below, which lags the drop it follows (by up to a
+// window).
 // docs/robustness.md ("Telling that the odometry was lost") has the
 // measurements behind the two values.
 class TrackingMonitor {
@@ -45,6 +48,7 @@ class TrackingMonitor {
     double share;
   };
   std::deque<Sample> window_;
+  double start_s_ = 0.0;  // the first scan's time since the last restart
   bool previous_poor_ = false;
   double previous_time_s_ = 0.0;
   TrackingReport report_;
