@@ -109,7 +109,7 @@ TEST(TrackingMonitor, ATimeGoingBackRestartsTheWindow) {
   TrackingMonitor monitor;
   Feed(&monitor, 8.0, 1.9, [](double) { return 0.0; });
   // Back to 0 s with ones: without the restart, the window at 2.0 s would
-  // hold the 15 earlier zeros of (0, 1.875] too (a mean of 16 / 31).
+  // also hold the earlier zeros (a mean of 17 / 32).
   Feed(&monitor, 8.0, 10.0, [](double) { return 1.0; });
   const TrackingReport& r = monitor.report();
   EXPECT_FALSE(r.lost());
