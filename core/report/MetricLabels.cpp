@@ -50,6 +50,7 @@ const std::map<std::string, MetricLabel>& KnownLabels() {
       {"key_scans", {"3D scans (key scans)", ""}},
       {"position_rmse_m", {"Position RMSE (unaligned)", "m"}},
       {"rotation_rmse_deg", {"Rotation RMSE (unaligned)", "deg"}},
+      {"lost", {"Odometry lost (scans stopped matching the map)", ""}},
   };
   return labels;
 }

@@ -82,6 +82,7 @@ Json Cards(const Json& run, const Json& metrics) {
       {&metrics, {"map_error_aligned_mean_m"}},
       {&run, {"mapping", "map_quality", "mean_plane_variance_m2"}},
       {&run, {"mapping", "map_quality", "mean_map_entropy"}},
+      {&run, {"localizer", "tracking", "lost"}},
   };
   Json out = Json::array();
   for (const Card& card : cards) {

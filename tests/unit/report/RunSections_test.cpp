@@ -70,6 +70,19 @@ TEST(RunSectionsTest, ValuesOfUnexpectedTypesAreShownNotRejected) {
   EXPECT_EQ(s["sections"][1]["rows"][0]["value"], "1 / 2");
 }
 
+TEST(RunSectionsTest, ALostRunSaysSoInACardAndAWarning) {
+  const Json run = Json::parse(R"({"localizer": {"tracking": {"lost": true, "first_poor_time_s": 615.7,
+                                  "messages": ["the scans stopped matching the map at 615.669 s"]}}})");
+  const Json s = RunSections(run, Json::object());
+  ASSERT_EQ(s["cards"].size(), 1u);
+  EXPECT_EQ(s["cards"][0]["key"], "localizer.tracking.lost");
+  EXPECT_EQ(s["cards"][0]["label"], "Odometry lost (scans stopped matching the map)");
+  EXPECT_EQ(s["cards"][0]["value"], "yes");
+  ASSERT_EQ(s["messages"].size(), 1u);
+  EXPECT_EQ(s["messages"][0]["source"], "localizer");
+  EXPECT_EQ(s["messages"][0]["text"], "the scans stopped matching the map at 615.669 s");
+}
+
 TEST(RunSectionsTest, EmptyFilesGiveEmptyTables) {
   const Json s = RunSections(Json::object(), Json::object());
   EXPECT_TRUE(s["sections"].empty());
