@@ -18,8 +18,7 @@ void TrackingMonitor::Add(double time_s, double inlier_share) {
     start_s_ = time_s;
   }
   // A poor window goes on until the next scan (for at most a window).
-  if (previous_poor_) report_.poor_s += std::min(time_s - previous_time_s_, kWindowS);
-  previous_time_s_ = time_s;
+  if (previous_poor_) report_.poor_s += std::min(time_s - window_.back().time_s, kWindowS);
   previous_poor_ = false;
   // The scans of the last kWindowS seconds: (time_s - kWindowS, time_s].
   window_.push_back({time_s, share});

@@ -48,9 +48,8 @@ class TrackingMonitor {
     double share;
   };
   std::deque<Sample> window_;
-  double start_s_ = 0.0;  // the first scan's time since the last restart
-  bool previous_poor_ = false;
-  double previous_time_s_ = 0.0;
+  double start_s_ = 0.0;        // the first scan's time since the last restart
+  bool previous_poor_ = false;  // the last scan's window was poor (the window then holds that scan last)
   TrackingReport report_;
 };
 

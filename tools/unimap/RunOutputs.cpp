@@ -119,12 +119,13 @@ Json LocalizerStatsJson(const pipeline::LocalizerStats& s) {
   tracking["window_s"] = pipeline::TrackingMonitor::kWindowS;
   tracking["min_inlier_share"] = pipeline::TrackingMonitor::kMinInlierShare;
   tracking["scans"] = t.scans;
-  tracking["first_time_s"] = t.scans > 0 ? Json(t.first_time_s) : Json(nullptr);
+  const bool judged = t.worst_window_time_s >= 0.0;
+  tracking["first_time_s"] = OrNull(t.first_time_s, t.scans > 0);
   tracking["lost"] = t.lost();
-  tracking["first_poor_time_s"] = t.lost() ? Json(t.first_poor_time_s) : Json(nullptr);
+  tracking["first_poor_time_s"] = OrNull(t.first_poor_time_s, t.lost());
   tracking["poor_s"] = t.poor_s;
-  tracking["worst_window_inlier_share"] = t.worst_window_time_s >= 0.0 ? Json(t.worst_window_share) : Json(nullptr);
-  tracking["worst_window_time_s"] = t.worst_window_time_s >= 0.0 ? Json(t.worst_window_time_s) : Json(nullptr);
+  tracking["worst_window_inlier_share"] = OrNull(t.worst_window_share, judged);
+  tracking["worst_window_time_s"] = OrNull(t.worst_window_time_s, judged);
   tracking["messages"] = t.lost() ? std::vector<std::string>{TrackingWarning(t)} : std::vector<std::string>{};
   o["tracking"] = tracking;
   return o;
