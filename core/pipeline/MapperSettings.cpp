@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <map>
+#include <string>
 
 #include "options/SettingsOverrides.hpp"
 #include "unimap/CoreParameters.hpp"
@@ -41,6 +42,47 @@ MapperOptions Apply(const options::SettingsOverrides& settings, const MapperOpti
   throw settings.Error(settings.settings().size() - 1, why);
 }
 
+// Keys of the `map` section that only the single-map localiser's
+// map::DistanceMap reads (unimap localize's prior map): the submaps of
+// unimap run and the Mapper API keep their surfaces in
+// map::SurfaceDistanceLayer, which does not, so setting one there would
+// change nothing. Each with what the submaps do instead and where it applies.
+struct UnreadKey {
+  const char* key;
+  const char* instead;  // what the submaps do, and where the key applies
+};
+constexpr UnreadKey kUnreadBySubmaps[] = {
+    {"map.subvoxel_surfaces",
+     "always measure to the surface inside each voxel; it applies to unimap localize's prior map only"},
+    {"map.signed_surfaces", "always measure unsigned distances; it applies to unimap localize's prior map only"},
+    {"map.cell_planes", "keep no cell planes; unimap localize sets it with --point-to-plane"},
+    {"map.recenter_fraction",
+     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
+     "only"},
+    {"map.growth_margin_m",
+     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
+     "only"},
+    {"map.max_edt_cells",
+     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
+     "only"},
+    {"map.max_occupied_voxels", "load no .bt map; it applies to unimap localize's prior map only"},
+    {"map.occupancy_threshold",
+     "call a voxel occupied above probability 0.5; it applies to unimap localize's prior map only"},
+    {"map.clear_occupied_only",
+     "always lower only voxels that are occupied; it applies to unimap localize's prior map only"},
+    {"map.discretize_rays", "always cast one ray per voxel hit; it applies to unimap localize's prior map only"},
+};
+
+// Throws ConfigError for the first setting the submaps would not read.
+void RejectUnreadBySubmaps(const options::SettingsOverrides& settings) {
+  for (std::size_t i = 0; i < settings.settings().size(); ++i) {
+    for (const UnreadKey& unread : kUnreadBySubmaps) {
+      if (settings.settings()[i].key != unread.key) continue;
+      throw settings.Error(i, std::string("not read by unimap run's submaps, which ") + unread.instead);
+    }
+  }
+}
+
 options::SettingsOverrides SettingsOf(const Platform& platform) {
   return options::SettingsOverrides(platform.file, kSection, platform.mapper_settings);
 }
@@ -49,7 +91,10 @@ options::SettingsOverrides SettingsOf(const Platform& platform) {
 
 MapperOptions MapperOptionsFor(const Platform& platform) {
   const MapperOptions base = MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
-  return Apply(SettingsOf(platform), base, true);
+  const options::SettingsOverrides settings = SettingsOf(platform);
+  MapperOptions options = Apply(settings, base, true);
+  RejectUnreadBySubmaps(settings);
+  return options;
 }
 
 LocalizerOptions PriorMapOptionsFor(const Platform& platform) {

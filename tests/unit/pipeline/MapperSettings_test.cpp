@@ -67,7 +67,7 @@ TEST(MapperSettingsTest, EverySectionReachesItsStruct) {
                                     "  eskf: {accel_bias_walk_m_s2_sqrt_s: 0.0002}\n"
                                     "  motion: {velocity_sigma_m_s: 2}\n"
                                     "  gpf: {num_particles: 250, planar: true}\n"
-                                    "  map: {prob_hit: 0.8, max_edt_cells: 1000000}\n"
+                                    "  map: {prob_hit: 0.8, max_insert_range_m: 25}\n"
                                     "  reacquire: {coarse_factor: 3}\n"
                                     "  line_gap_fill: {max_gap_m: 0.5}\n"
                                     "  graph: {max_iterations: 7}\n"
@@ -80,7 +80,7 @@ TEST(MapperSettingsTest, EverySectionReachesItsStruct) {
   EXPECT_EQ(o.localizer.gpf.num_particles, 250);
   EXPECT_TRUE(o.localizer.gpf.planar);
   EXPECT_EQ(o.localizer.map.prob_hit, 0.8);
-  EXPECT_EQ(o.localizer.map.max_edt_cells, 1000000u);
+  EXPECT_EQ(o.localizer.map.max_insert_range_m, 25.0);
   EXPECT_EQ(o.submaps.map.prob_hit, 0.8);  // each submap's map is the `map` section
   EXPECT_EQ(o.localizer.reacquire.coarse_factor, 3);
   ASSERT_TRUE(o.localizer.line_gap_fill.has_value());
@@ -169,6 +169,30 @@ TEST(MapperSettingsTest, TypeGroupAndElsewhereErrors) {
   EXPECT_NE(e.reason().find("distance_map_resolution_m"), std::string::npos) << e.what();
   e = SettingsError("mapper:\n  gpf:\n    seed: 3\n");
   EXPECT_NE(e.reason().find("--seed"), std::string::npos) << e.what();
+}
+
+// The submaps of unimap run keep their surfaces in SurfaceDistanceLayer,
+// which does not read these keys: setting one for a run is an error naming
+// the file, line and key, while unimap localize's prior map takes it.
+TEST(MapperSettingsTest, MapKeysTheSubmapsDoNotReadAreErrorsForARun) {
+  const int line = FirstExtraLine() + 2;
+  for (const char* setting :
+       {"subvoxel_surfaces: true", "signed_surfaces: true", "cell_planes: true", "recenter_fraction: 0.3",
+        "growth_margin_m: 0.4", "max_edt_cells: 1000000", "max_occupied_voxels: 100000", "occupancy_threshold: 0.6",
+        "clear_occupied_only: true", "discretize_rays: true"}) {
+    const std::string text = setting;
+    const ConfigError e = SettingsError("mapper:\n  map:\n    " + text + "\n");
+    EXPECT_EQ(e.file(), "platform.yaml") << text;
+    EXPECT_EQ(e.line(), line) << text;
+    EXPECT_EQ(e.key(), "mapper.map." + text.substr(0, text.find(':'))) << text;
+    EXPECT_NE(e.reason().find("not read by unimap run's submaps"), std::string::npos) << e.what();
+    EXPECT_NE(e.reason().find("unimap localize"), std::string::npos) << e.what();
+  }
+  // A key they read is taken, and the prior map takes the others.
+  EXPECT_EQ(MapperOptionsFor(WithSettings("mapper:\n  map:\n    prob_miss: 0.45\n")).submaps.map.prob_miss, 0.45);
+  const Platform prior = WithSettings("mapper:\n  map:\n    signed_surfaces: false\n    max_edt_cells: 1000000\n");
+  EXPECT_FALSE(PriorMapOptionsFor(prior).map.signed_surfaces);
+  EXPECT_EQ(PriorMapOptionsFor(prior).map.max_edt_cells, 1000000u);
 }
 
 TEST(MapperSettingsTest, PriorMapOptionsTakeTheLocalizerKeys) {
