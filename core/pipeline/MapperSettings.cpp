@@ -47,30 +47,24 @@ MapperOptions Apply(const options::SettingsOverrides& settings, const MapperOpti
 // unimap run and the Mapper API keep their surfaces in
 // map::SurfaceDistanceLayer, which does not, so setting one there would
 // change nothing. Each with what the submaps do instead and where it applies.
+constexpr const char* kPriorMapOnly = "it applies to unimap localize's prior map only";
+constexpr const char* kNoBox = "compute their fields in blocks around the surfaces, not in a box";
 struct UnreadKey {
   const char* key;
-  const char* instead;  // what the submaps do, and where the key applies
+  const char* instead;                  // what the submaps do
+  const char* applies = kPriorMapOnly;  // where the key applies
 };
 constexpr UnreadKey kUnreadBySubmaps[] = {
-    {"map.subvoxel_surfaces",
-     "always measure to the surface inside each voxel; it applies to unimap localize's prior map only"},
-    {"map.signed_surfaces", "always measure unsigned distances; it applies to unimap localize's prior map only"},
-    {"map.cell_planes", "keep no cell planes; unimap localize sets it with --point-to-plane"},
-    {"map.recenter_fraction",
-     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
-     "only"},
-    {"map.growth_margin_m",
-     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
-     "only"},
-    {"map.max_edt_cells",
-     "compute their fields in blocks around the surfaces, not in a box; it applies to unimap localize's prior map "
-     "only"},
-    {"map.max_occupied_voxels", "load no .bt map; it applies to unimap localize's prior map only"},
-    {"map.occupancy_threshold",
-     "call a voxel occupied above probability 0.5; it applies to unimap localize's prior map only"},
-    {"map.clear_occupied_only",
-     "always lower only voxels that are occupied; it applies to unimap localize's prior map only"},
-    {"map.discretize_rays", "always cast one ray per voxel hit; it applies to unimap localize's prior map only"},
+    {"map.subvoxel_surfaces", "always measure to the surface inside each voxel"},
+    {"map.signed_surfaces", "always measure unsigned distances"},
+    {"map.cell_planes", "keep no cell planes", "unimap localize sets it with --point-to-plane"},
+    {"map.recenter_fraction", kNoBox},
+    {"map.growth_margin_m", kNoBox},
+    {"map.max_edt_cells", kNoBox},
+    {"map.max_occupied_voxels", "load no .bt map"},
+    {"map.occupancy_threshold", "call a voxel occupied above probability 0.5"},
+    {"map.clear_occupied_only", "always lower only voxels that are occupied"},
+    {"map.discretize_rays", "always cast one ray per voxel hit"},
 };
 
 // Throws ConfigError for the first setting the submaps would not read.
@@ -78,7 +72,8 @@ void RejectUnreadBySubmaps(const options::SettingsOverrides& settings) {
   for (std::size_t i = 0; i < settings.settings().size(); ++i) {
     for (const UnreadKey& unread : kUnreadBySubmaps) {
       if (settings.settings()[i].key != unread.key) continue;
-      throw settings.Error(i, std::string("not read by unimap run's submaps, which ") + unread.instead);
+      throw settings.Error(
+          i, std::string("not read by unimap run's submaps, which ") + unread.instead + "; " + unread.applies);
     }
   }
 }
