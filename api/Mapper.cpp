@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 #include <utility>
 #include <variant>
@@ -45,10 +46,11 @@ std::array<bool, api::kStreams> ExpectedStreams(const MapperSettings& settings, 
   return expected;
 }
 
-pipeline::MapperOptions OptionsFor(const MapperSettings& settings, const Platform& platform) {
+pipeline::MapperOptions OptionsFor(const MapperSettings& settings, const Platform& platform,
+                                   const pipeline::SceneScale& scene) {
   // As `unimap run` builds them (tools/unimap/MappingRun.cpp), so that
   // kSynchronous gives its results.
-  pipeline::MapperOptions options = pipeline::MapperOptionsFor(platform);
+  pipeline::MapperOptions options = pipeline::MapperOptionsFor(platform, scene);
   options.localizer.gpf.threads = settings.threads;
   if (!settings.loop_closure) options.loop_search.enabled = false;
   options.localizer.motion.source = SourceOf(settings.motion);
@@ -56,6 +58,15 @@ pipeline::MapperOptions OptionsFor(const MapperSettings& settings, const Platfor
     options.localizer.wait_for_map = false;
     options.wait_for_background = false;
   }
+  return options;
+}
+
+// The options at the platform's own voxel, checked as the mapper checks
+// them: a bad `mapper:` section fails here, not at the first 3D scan.
+pipeline::MapperOptions CheckedOptions(const MapperSettings& settings, const Platform& platform) {
+  const pipeline::MapperOptions options = OptionsFor(settings, platform, {});
+  std::string why;
+  if (!options.IsValid(&why)) throw ConfigError("", 0, "", "mapper options: " + why);
   return options;
 }
 
@@ -72,7 +83,7 @@ class Mapper::Impl {
   explicit Impl(const MapperSettings& settings)
       : settings_(Validated(settings)),
         platform_(LoadPlatform(settings_.platform_file)),
-        mapper_(OptionsFor(settings_, platform_), platform_.plugin.plugin),
+        scene_scans_(CheckedOptions(settings_, platform_).localizer.scans_per_3d_scan),
         merge_(ExpectedStreams(settings_, *platform_.plugin.plugin)) {
     if (settings_.mode == MapperMode::kLive) worker_ = std::thread([this] { Work(); });
   }
@@ -112,7 +123,8 @@ class Mapper::Impl {
       RethrowWorkerError();
     }
     std::lock_guard<std::mutex> process_lock(process_mutex_);
-    mapper_.Finish();
+    if (!mapper_) Build();
+    mapper_->Finish();
     CollectPoses();
   }
 
@@ -127,12 +139,14 @@ class Mapper::Impl {
   }
   std::vector<StampedPose> Trajectory() const {
     std::lock_guard<std::mutex> lock(process_mutex_);
-    return mapper_.OptimizedTrajectory();
+    if (!mapper_) return {};
+    return mapper_->OptimizedTrajectory();
   }
   std::vector<Eigen::Vector3f> MapPoints(double voxel_m) const {
     if (!(voxel_m > 0.0)) throw InputError("MapPoints: voxel_m must be > 0, got " + std::to_string(voxel_m));
     std::lock_guard<std::mutex> lock(process_mutex_);
-    return mapper_.MapPoints(voxel_m);
+    if (!mapper_) return {};
+    return mapper_->MapPoints(voxel_m);
   }
 
   MapperStatus Status() const {
@@ -149,10 +163,14 @@ class Mapper::Impl {
       status.events_waiting += work_.size();
     }
     std::lock_guard<std::mutex> lock(process_mutex_);
-    const pipeline::LocalizerStats& localizer = mapper_.localizer_stats();
+    if (!mapper_) {
+      status.events_waiting += held_.size();
+      return status;
+    }
+    const pipeline::LocalizerStats& localizer = mapper_->localizer_stats();
     status.scans_processed = localizer.scans;
     status.scans_matched = localizer.scans_matched;
-    const pipeline::MapperStats stats = mapper_.stats();
+    const pipeline::MapperStats stats = mapper_->stats();
     status.key_scans = stats.key_scans;
     status.submaps = stats.submaps;
     status.loop_closures = stats.loop_closures;
@@ -206,25 +224,49 @@ class Mapper::Impl {
     if (worker_error_) std::rethrow_exception(std::exchange(worker_error_, nullptr));
   }
 
-  // Holds process_mutex_.
+  // Holds process_mutex_. Until the first 3D scan's scans have arrived the
+  // events are held: they size the map's voxel (pipeline::SceneVoxel, as
+  // `unimap run` does from the dataset's first scans), then the mapper is
+  // built and they are processed in order.
   void Process(io::DatasetEvent event) {
+    if (mapper_) {
+      ProcessBuilt(std::move(event));
+      return;
+    }
+    if (const auto* scan = std::get_if<io::ScanRecord>(&event)) scene_records_.push_back(*scan);
+    held_.push_back(std::move(event));
+    if (static_cast<int>(scene_records_.size()) >= scene_scans_) Build();
+  }
+
+  // Holds process_mutex_: builds the mapper for the held scans' scene and processes the held events.
+  void Build() {
+    const pipeline::SceneScale scene = pipeline::MeasureSceneScale(scene_records_);
+    scene_records_.clear();
+    mapper_.emplace(OptionsFor(settings_, platform_, scene), platform_.plugin.plugin);
+    std::vector<io::DatasetEvent> held = std::move(held_);
+    held_.clear();
+    for (io::DatasetEvent& event : held) ProcessBuilt(std::move(event));
+  }
+
+  // Holds process_mutex_.
+  void ProcessBuilt(io::DatasetEvent event) {
     if (auto* imu = std::get_if<ImuSample>(&event)) {
-      mapper_.AddImu(*imu);
+      mapper_->AddImu(*imu);
     } else if (auto* encoder = std::get_if<EncoderSample>(&event)) {
-      mapper_.AddEncoder(*encoder);
+      mapper_->AddEncoder(*encoder);
     } else if (auto* odometry = std::get_if<OdometrySample>(&event)) {
-      mapper_.AddOdometry(*odometry);
+      mapper_->AddOdometry(*odometry);
     } else {
       io::ScanRecord& scan = std::get<io::ScanRecord>(event);
       newest_processed_s_ = io::ScanEndTime(scan);
-      mapper_.AddScan(std::move(scan));
+      mapper_->AddScan(std::move(scan));
     }
     CollectPoses();
   }
 
   // Holds process_mutex_.
   void CollectPoses() {
-    for (const pipeline::ScanPose& pose : mapper_.TakePoses()) {
+    for (const pipeline::ScanPose& pose : mapper_->TakePoses()) {
       const MapperPose out{pose.time_s, pose.T_map_body, pose.matched, pose.points};
       {
         std::lock_guard<std::mutex> lock(poses_mutex_);
@@ -235,8 +277,11 @@ class Mapper::Impl {
   }
 
   const MapperSettings settings_;
-  const Platform platform_;  // holds the plugin's library while mapper_ uses it
-  pipeline::Mapper mapper_;  // guarded by process_mutex_
+  const Platform platform_;                    // holds the plugin's library while mapper_ uses it
+  const int scene_scans_;                      // scans that size the map's voxel (the first 3D scan's)
+  std::optional<pipeline::Mapper> mapper_;     // guarded by process_mutex_; built by Build()
+  std::vector<io::DatasetEvent> held_;         // guarded by process_mutex_: events before Build()
+  std::vector<io::ScanRecord> scene_records_;  // guarded by process_mutex_: the held scans
 
   mutable std::mutex add_mutex_;  // guards the merge and the counters below
   api::EventMerge merge_;

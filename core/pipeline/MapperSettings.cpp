@@ -84,8 +84,13 @@ options::SettingsOverrides SettingsOf(const Platform& platform) {
 
 }  // namespace
 
-MapperOptions MapperOptionsFor(const Platform& platform) {
-  const MapperOptions base = MapperOptions::FromPlatform(CoreParameters::FromMap(platform.parameters));
+MapperOptions MapperOptionsFor(const Platform& platform) { return MapperOptionsFor(platform, SceneScale{}); }
+
+MapperOptions MapperOptionsFor(const Platform& platform, const SceneScale& scene) {
+  CoreParameters core = CoreParameters::FromMap(platform.parameters);
+  core.distance_map_resolution_m =
+      SceneVoxel(core.distance_map_resolution_m, scene.median_range_m, kMaxVoxelsAcrossScene);
+  const MapperOptions base = MapperOptions::FromPlatform(core);
   const options::SettingsOverrides settings = SettingsOf(platform);
   MapperOptions options = Apply(settings, base, true);
   RejectUnreadBySubmaps(settings);

@@ -4,6 +4,7 @@
 
 #include "pipeline/LocalizerOptions.hpp"
 #include "pipeline/MapperOptions.hpp"
+#include "pipeline/SceneScale.hpp"
 #include "unimap/Platform.hpp"
 
 namespace unimap::pipeline {
@@ -25,6 +26,9 @@ struct MapperSettingRow {
 // a key set elsewhere, a wrong type, or a value the options reject
 // (IsValid; the first setting that makes them invalid is named).
 MapperOptions MapperOptionsFor(const Platform& platform);
+// The same with the platform's distance-map voxel coarsened to the scene
+// (SceneVoxel with kMaxVoxelsAcrossScene); a scene without returns keeps it.
+MapperOptions MapperOptionsFor(const Platform& platform, const SceneScale& scene);
 // LocalizerOptions::ForPriorMap (unimap localize) with the section's
 // localiser keys applied; the other keys are checked but have no effect.
 LocalizerOptions PriorMapOptionsFor(const Platform& platform);

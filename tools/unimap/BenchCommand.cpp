@@ -133,8 +133,13 @@ std::vector<BenchmarkFigure> LocalizeScenario(const BenchOptions& options, const
   } cleanup{run.out_dir};
   const sim::SimulationSummary s = sim::Simulator(sim::LoadScenario(file), run).Run();
   const Platform platform = sim::Simulator::LoadPayload(s.payload_source);
-  pipeline::ResetPeakRss();  // the peak of this run, not of the cases before it
-  pipeline::Mapper mapper(pipeline::MapperOptionsFor(platform), platform.plugin.plugin);
+  pipeline::ResetPeakRss();    // the peak of this run, not of the cases before it
+  pipeline::SceneScale scene;  // as `unimap run` sizes the map's voxel
+  {
+    io::DatasetReader probe(run.out_dir);
+    scene = pipeline::ReadSceneScale(probe, pipeline::MapperOptionsFor(platform).localizer.scans_per_3d_scan);
+  }
+  pipeline::Mapper mapper(pipeline::MapperOptionsFor(platform, scene), platform.plugin.plugin);
   io::DatasetReader reader(run.out_dir);
   const fs::path odometry_file = run.out_dir / "odometry.tum";
   pipeline::RunSummary summary;

@@ -10,12 +10,14 @@
 #include "MotionChoice.hpp"
 #include "OutputFolder.hpp"
 #include "RunOutputs.hpp"
+#include "SceneScaleReport.hpp"
 #include "estimation/MotionPriorOptions.hpp"
 #include "eval/LoopClosureCheck.hpp"
 #include "io/DatasetReader.hpp"
 #include "io/TumTrajectory.hpp"
 #include "pipeline/Mapper.hpp"
 #include "pipeline/MapperSettings.hpp"
+#include "pipeline/SceneScale.hpp"
 #include "unimap/EncoderTrack.hpp"
 #include "unimap/Errors.hpp"
 #include "unimap/Platform.hpp"
@@ -31,7 +33,14 @@ int RunMappingToFolder(const MappingRunOptions& options) {
   try {
     PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
-    pipeline::MapperOptions mapper_options = pipeline::MapperOptionsFor(platform);
+    // The map's voxel follows the scene's scale, read from the first 3D
+    // scan (docs/mapping.md, "The map's voxel follows the scene's scale").
+    pipeline::SceneScale scene;
+    {
+      OpenedData probe = OpenData(options.data_dir, options.recording);
+      scene = pipeline::ReadSceneScale(*probe.reader, pipeline::MapperOptionsFor(platform).localizer.scans_per_3d_scan);
+    }
+    pipeline::MapperOptions mapper_options = pipeline::MapperOptionsFor(platform, scene);
     mapper_options.localizer.gpf.threads = options.threads;
     mapper_options.localizer.gpf.seed = options.seed;
     if (options.no_loop_closure) mapper_options.loop_search.enabled = false;
@@ -47,6 +56,7 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     const MotionChoice motion = ChooseMotion(options.motion, reader, mapper_options.localizer.motion.static_body);
     mapper_options.localizer.motion.source = motion.source;
     std::cout << "motion: " << motion.name << " (" << motion.reason << ")\n";
+    std::cout << SceneVoxelLine(platform, scene, mapper_options.submaps.map.resolution_m) << "\n";
     CheckDatasetForPlatform(reader, options.data_dir, *platform.plugin.plugin, options.force_payload);
     const std::filesystem::path out(options.out_dir);
     pipeline::Mapper mapper(mapper_options, platform.plugin.plugin);
@@ -80,6 +90,8 @@ int RunMappingToFolder(const MappingRunOptions& options) {
     outputs.motion = motion.name;
     outputs.motion_reason = motion.reason;
     outputs.extras.emplace_back("mapping", mapping);
+    outputs.extras.emplace_back("scene_scale",
+                                SceneScaleJson(platform, scene, mapper_options.submaps.map.resolution_m));
     outputs.extras.emplace_back("stages", StageTimesJson(stages, summary.processing_s, !options.quiet));
     const pipeline::MapperStats stats = mapper.stats();
     if (outputs.has_groundtruth && stats.first_loop_closure_time_s >= 0.0) {

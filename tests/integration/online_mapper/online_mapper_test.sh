@@ -7,6 +7,9 @@
 # 3. runs the example synchronously with one thread per stream, as fast as
 #    they go: odometry and optimised trajectory must equal unimap run's, number
 #    for number, and the map must hold the same points;
+#    The same for 12 s of the patio with the fixed VLP-16, whose scene
+#    spans more than 40 of the platform's voxels: both must size the map's
+#    voxel from the first 3D scan alike (0.3 m, docs/mapping.md);
 # 4. runs it live at the sensor rate: its odometry must stay within
 #    1 cm (RMS, same time stamps) of unimap run's;
 # 5. (given PYTHON and an installed module) maps the same data with the
@@ -42,14 +45,15 @@ step "synchronous, one thread per stream"
 "$example" --platform "$platform" --data "$work/data" --rate 0 --odometry-out "$work/sync_odometry.tum" \
   --trajectory-out "$work/sync_trajectory.tum" --map-out "$work/sync_map.ply" > "$work/sync.log"
 grep -q "^pose t=" "$work/sync.log" || fail "the example printed no pose"
-python3 - "$work" <<'PY'
+compare_sync() {  # DIR_PREFIX RUN_DIR: the example's outputs against unimap run's, number for number
+  python3 - "$1" "$2" <<'PY'
 import sys
-w = sys.argv[1]
+prefix, run = sys.argv[1:3]
 def rows(f):
     return [tuple(float(v) for v in line.split()) for line in open(f) if line.strip() and not line.startswith('#')]
-for mine, theirs in (("sync_odometry.tum", "run/trajectory_odometry.tum"),
-                     ("sync_trajectory.tum", "run/trajectory.tum")):
-    a, b = rows(f"{w}/{mine}"), rows(f"{w}/{theirs}")
+for mine, theirs in ((f"{prefix}odometry.tum", f"{run}/trajectory_odometry.tum"),
+                     (f"{prefix}trajectory.tum", f"{run}/trajectory.tum")):
+    a, b = rows(mine), rows(theirs)
     if len(a) != len(b) or not a:
         sys.exit(f"FAIL: {mine} has {len(a)} poses, {theirs} {len(b)}")
     diff = [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
@@ -57,8 +61,36 @@ for mine, theirs in (("sync_odometry.tum", "run/trajectory_odometry.tum"),
         sys.exit(f"FAIL: {mine} differs from {theirs} at pose {diff[0]}: {a[diff[0]]} vs {b[diff[0]]}")
     print(f"{mine}: {len(a)} poses identical to {theirs}")
 PY
+}
+compare_sync "$work/sync_" "$work/run"
 cmp -s "$work/sync_map.ply" "$work/run/map.ply" || fail "sync_map.ply differs from unimap run's map.ply"
 echo "sync_map.ply identical to map.ply"
+
+step "synchronous, a scene that coarsens the map's voxel"
+"$unimap" simulate --quiet --scenario "$src/configs/scenarios/patio.yaml" \
+  --payload "$work/prefix/share/unimap/configs/platforms/fixed_vlp16.yaml" --duration-s 12 --out "$work/patio"
+"$unimap" run --quiet --platform "$work/prefix/share/unimap/configs/platforms/fixed_vlp16.yaml" --data "$work/patio" \
+  --out "$work/patio_run" > "$work/patio_run.log"
+grep -q "^map voxel: 0.3 m" "$work/patio_run.log" || fail "unimap run did not coarsen the patio's voxel to 0.3 m"
+"$example" --platform "$work/prefix/share/unimap/configs/platforms/fixed_vlp16.yaml" --data "$work/patio" --rate 0 \
+  --odometry-out "$work/patio_odometry.tum" --trajectory-out "$work/patio_trajectory.tum" \
+  --map-out "$work/patio_map.ply" > "$work/patio_sync.log"
+compare_sync "$work/patio_" "$work/patio_run"
+python3 - "$work/patio_map.ply" "$work/patio_run/map.ply" <<'PY'
+import struct, sys
+def xyz(path):  # binary little-endian PLY of float properties: the x, y, z of every vertex
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    n = int(next(l.split()[2] for l in header if l.startswith("element vertex")))
+    props = [l.split()[2] for l in header if l.startswith("property float")]
+    values = struct.unpack(f"<{n * len(props)}f", data[end:end + 4 * n * len(props)])
+    return [values[i * len(props):i * len(props) + 3] for i in range(n)]
+a, b = xyz(sys.argv[1]), xyz(sys.argv[2])
+if a != b:
+    sys.exit(f"FAIL: the example's map ({len(a)} points) differs from unimap run's ({len(b)})")
+print(f"patio_map.ply: {len(a)} points identical to unimap run's map.ply (x, y, z)")
+PY
 
 step "live at the sensor rate"
 "$example" --platform "$platform" --data "$work/data" --live --rate 1 --odometry-out "$work/live_odometry.tum" \

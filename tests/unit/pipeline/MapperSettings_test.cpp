@@ -229,5 +229,24 @@ TEST(MapperSettingsTest, ListingSaysWhereEachValueCameFrom) {
   }
 }
 
+// The scene's scale coarsens the voxel and everything FromPlatform derives
+// from it, exactly as a platform file with that voxel would.
+TEST(MapperSettingsTest, SceneScaleCoarsensTheVoxelAsThePlatformFileWould) {
+  const Platform platform = WithSettings("");
+  const MapperOptions near = MapperOptionsFor(platform, SceneScale{1.5, 1000, 40});
+  EXPECT_EQ(Rows(near), Rows(MapperOptionsFor(platform)));
+  SceneScale far{9.18, 1000, 40};  // 91.8 of the platform's 0.1 m voxels: 3 x
+  const MapperOptions coarse = MapperOptionsFor(platform, far);
+  EXPECT_DOUBLE_EQ(coarse.submaps.map.resolution_m, 0.3);
+  std::ifstream in(test::kPlatform);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string key = "distance_map_resolution_m: 0.1";
+  ASSERT_NE(yaml.find(key), std::string::npos);
+  yaml.replace(yaml.find(key), key.size(), "distance_map_resolution_m: 0.3");
+  EXPECT_EQ(Rows(coarse), Rows(MapperOptionsFor(LoadPlatformFromString(yaml, "platform.yaml"))));
+}
+
 }  // namespace
 }  // namespace unimap::pipeline

@@ -1,0 +1,38 @@
+#pragma once
+// The scene's scale, read from the first 3D scan, and the map voxel it asks
+// for (docs/mapping.md, "The map's voxel follows the scene's scale").
+#include <cstddef>
+#include <vector>
+
+#include "io/DatasetReader.hpp"
+#include "io/ScanRecord.hpp"
+
+namespace unimap::pipeline {
+
+// At most this many map voxels across the scene's median range: the
+// shipped platforms' voxels were measured in scenes spanning 4-34 of their
+// voxels (docs/mapping.md has the table); a scene spanning more gets a
+// coarser voxel instead of a map whose upkeep grows with the square of it.
+constexpr double kMaxVoxelsAcrossScene = 40.0;
+
+struct SceneScale {
+  double median_range_m = 0.0;  // median range of the scans' returns (0 without any)
+  std::size_t returns = 0;      // returns counted (finite, within a line's valid range, range > 0)
+  std::size_t scans = 0;        // scans they came from
+};
+
+// The median range over every return of the scans (ranges are frame-free,
+// so neither deskewing nor the encoder is needed).
+SceneScale MeasureSceneScale(const std::vector<io::ScanRecord>& scans);
+
+// The scene scale of the first `scans` scans a reader holds (a reader
+// opened for this alone: the scans are consumed).
+SceneScale ReadSceneScale(io::DatasetReader& reader, int scans);
+
+// The platform's voxel times the smallest whole factor k >= 1 for which the
+// median range spans at most max_voxels_across voxels:
+// k = max(1, ceil(median_range_m / (max_voxels_across * platform_voxel_m))).
+// A median range of 0 (no returns) keeps the platform's voxel.
+double SceneVoxel(double platform_voxel_m, double median_range_m, double max_voxels_across);
+
+}  // namespace unimap::pipeline
