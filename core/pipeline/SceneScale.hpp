@@ -9,10 +9,11 @@
 
 namespace unimap::pipeline {
 
-// At most this many map voxels across the scene's median range: the
-// shipped platforms' voxels were measured in scenes spanning 4-34 of their
-// voxels (docs/mapping.md has the table); a scene spanning more gets a
-// coarser voxel instead of a map whose upkeep grows with the square of it.
+// At most this many map voxels across the scene's median range: the scenes
+// the fixed VLP-16, rotating Hokuyo, rotating VLP-16 and HDL-64 files were
+// made for span 4-34 of their voxels, the patio with the fixed VLP-16 92
+// (docs/mapping.md, "Seventh round"); a scene spanning more gets a coarser
+// voxel instead of a map whose upkeep grows with the square of the span.
 constexpr double kMaxVoxelsAcrossScene = 40.0;
 
 struct SceneScale {

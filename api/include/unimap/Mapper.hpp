@@ -70,7 +70,8 @@ struct MapperStatus {
   int submaps = 0;                  // submaps started
   std::size_t loop_closures = 0;    // loop closures accepted
   double lag_s = 0.0;               // newest time added minus newest scan time processed (s)
-  std::size_t events_waiting = 0;   // added but not yet processed (waiting for other streams or the worker)
+  std::size_t events_waiting = 0;   // added but not yet processed (waiting for other streams, the worker, or
+                                    // the first 3D scan's scans, which size the map: docs/library.md)
 };
 
 // One mapper: the paper's system (ESKF + Gaussian particle filter on a
