@@ -233,19 +233,29 @@ class Mapper::Impl {
       ProcessBuilt(std::move(event));
       return;
     }
-    if (const auto* scan = std::get_if<io::ScanRecord>(&event)) scene_records_.push_back(*scan);
+    if (std::holds_alternative<io::ScanRecord>(event)) ++held_scans_;
     held_.push_back(std::move(event));
-    if (static_cast<int>(scene_records_.size()) >= scene_scans_) Build();
+    if (held_scans_ >= scene_scans_) Build();
   }
 
-  // Holds process_mutex_: builds the mapper for the held scans' scene and processes the held events.
+  // Holds process_mutex_: builds the mapper for the held scans' scene, then
+  // processes the held events in order. Throws ConfigError when the
+  // platform's `mapper:` section is invalid at the scene's voxel (the events
+  // stay held; the next call measures the same first scans again).
   void Build() {
-    const pipeline::SceneScale scene = pipeline::MeasureSceneScale(scene_records_);
-    scene_records_.clear();
+    std::vector<io::ScanRecord> scans;
+    for (const io::DatasetEvent& event : held_) {
+      const auto* scan = std::get_if<io::ScanRecord>(&event);
+      if (scan != nullptr && static_cast<int>(scans.size()) < scene_scans_) scans.push_back(*scan);
+    }
+    const pipeline::SceneScale scene = pipeline::MeasureSceneScale(scans);
+    scans.clear();
     mapper_.emplace(OptionsFor(settings_, platform_, scene), platform_.plugin.plugin);
-    std::vector<io::DatasetEvent> held = std::move(held_);
-    held_.clear();
-    for (io::DatasetEvent& event : held) ProcessBuilt(std::move(event));
+    while (!held_.empty()) {
+      io::DatasetEvent event = std::move(held_.front());
+      held_.pop_front();
+      ProcessBuilt(std::move(event));
+    }
   }
 
   // Holds process_mutex_.
@@ -277,11 +287,11 @@ class Mapper::Impl {
   }
 
   const MapperSettings settings_;
-  const Platform platform_;                    // holds the plugin's library while mapper_ uses it
-  const int scene_scans_;                      // scans that size the map's voxel (the first 3D scan's)
-  std::optional<pipeline::Mapper> mapper_;     // guarded by process_mutex_; built by Build()
-  std::vector<io::DatasetEvent> held_;         // guarded by process_mutex_: events before Build()
-  std::vector<io::ScanRecord> scene_records_;  // guarded by process_mutex_: the held scans
+  const Platform platform_;                 // holds the plugin's library while mapper_ uses it
+  const int scene_scans_;                   // scans that size the map's voxel (the first 3D scan's)
+  std::optional<pipeline::Mapper> mapper_;  // guarded by process_mutex_; built by Build()
+  std::deque<io::DatasetEvent> held_;       // guarded by process_mutex_: events before Build()
+  int held_scans_ = 0;                      // guarded by process_mutex_: scans among them
 
   mutable std::mutex add_mutex_;  // guards the merge and the counters below
   api::EventMerge merge_;

@@ -1,11 +1,14 @@
 #include "pipeline/MapperSettings.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <map>
 #include <string>
 
 #include "options/SettingsOverrides.hpp"
 #include "unimap/CoreParameters.hpp"
+#include "unimap/Errors.hpp"
 
 namespace unimap::pipeline {
 namespace {
@@ -39,6 +42,7 @@ MapperOptions Apply(const options::SettingsOverrides& settings, const MapperOpti
     Derive(settings, clamp_follows_gpf, &derived);
     if (!derived.IsValid(&why)) throw settings.Error(i, why);
   }
+  if (settings.settings().empty()) throw ConfigError("", 0, "", "mapper options: " + why);
   throw settings.Error(settings.settings().size() - 1, why);
 }
 
@@ -88,13 +92,28 @@ MapperOptions MapperOptionsFor(const Platform& platform) { return MapperOptionsF
 
 MapperOptions MapperOptionsFor(const Platform& platform, const SceneScale& scene) {
   CoreParameters core = CoreParameters::FromMap(platform.parameters);
-  core.distance_map_resolution_m =
-      SceneVoxel(core.distance_map_resolution_m, scene.median_range_m, kMaxVoxelsAcrossScene);
+  const double platform_voxel_m = core.distance_map_resolution_m;
+  // At most the largest voxel a platform file may set (CoreParameters: a
+  // quarter of the box, 2 m), so that the derived options stay valid.
+  core.distance_map_resolution_m = SceneVoxel(platform_voxel_m, scene.median_range_m, kMaxVoxelsAcrossScene,
+                                              std::min(core.distance_map_max_range_m / 4.0, kMaxSceneVoxelM));
   const MapperOptions base = MapperOptions::FromPlatform(core);
   const options::SettingsOverrides settings = SettingsOf(platform);
-  MapperOptions options = Apply(settings, base, true);
-  RejectUnreadBySubmaps(settings);
-  return options;
+  try {
+    MapperOptions options = Apply(settings, base, true);
+    RejectUnreadBySubmaps(settings);
+    return options;
+  } catch (const ConfigError& e) {
+    if (core.distance_map_resolution_m == platform_voxel_m) throw;
+    // A `mapper:` value that holds at the platform's voxel but not at the
+    // scene's: say which voxel and why it was chosen.
+    char context[200];
+    std::snprintf(context, sizeof(context),
+                  " (with the map voxel of %g m that the scene's scale chose: the first scans' median range of "
+                  "%.3g m spans more than %g of the platform's %g m voxels)",
+                  core.distance_map_resolution_m, scene.median_range_m, kMaxVoxelsAcrossScene, platform_voxel_m);
+    throw ConfigError(e.file(), e.line(), e.key(), e.reason() + context);
+  }
 }
 
 LocalizerOptions PriorMapOptionsFor(const Platform& platform) {

@@ -28,6 +28,8 @@ struct MapperSettingRow {
 MapperOptions MapperOptionsFor(const Platform& platform);
 // The same with the platform's distance-map voxel coarsened to the scene
 // (SceneVoxel with kMaxVoxelsAcrossScene); a scene without returns keeps it.
+// A `mapper:` value that is invalid only at the coarser voxel throws
+// ConfigError naming the key, the voxel and why the scene chose it.
 MapperOptions MapperOptionsFor(const Platform& platform, const SceneScale& scene);
 // LocalizerOptions::ForPriorMap (unimap localize) with the section's
 // localiser keys applied; the other keys are checked but have no effect.

@@ -6,6 +6,8 @@
 #include <utility>
 #include <variant>
 
+#include "unimap/Errors.hpp"
+
 namespace unimap::pipeline {
 
 SceneScale MeasureSceneScale(const std::vector<io::ScanRecord>& scans) {
@@ -34,19 +36,25 @@ SceneScale MeasureSceneScale(const std::vector<io::ScanRecord>& scans) {
 
 SceneScale ReadSceneScale(io::DatasetReader& reader, int scans) {
   std::vector<io::ScanRecord> first;
-  while (static_cast<int>(first.size()) < scans) {
-    std::optional<io::ScanRecord> scan = reader.NextScan();
-    if (!scan) break;
-    first.push_back(std::move(*scan));
+  try {
+    while (static_cast<int>(first.size()) < scans) {
+      std::optional<io::ScanRecord> scan = reader.NextScan();
+      if (!scan) break;
+      first.push_back(std::move(*scan));
+    }
+  } catch (const Error&) {
+    // Measured from the scans before the bad record; the run reports it.
   }
   return MeasureSceneScale(first);
 }
 
-double SceneVoxel(double platform_voxel_m, double median_range_m, double max_voxels_across) {
+double SceneVoxel(double platform_voxel_m, double median_range_m, double max_voxels_across, double max_voxel_m) {
   if (!(median_range_m > 0.0) || !(platform_voxel_m > 0.0) || !(max_voxels_across > 0.0)) return platform_voxel_m;
-  const double k = std::ceil(median_range_m / (max_voxels_across * platform_voxel_m) - 1e-9);
+  const double k_max = std::floor(max_voxel_m / platform_voxel_m + 1e-9);
+  const double k = std::min(std::ceil(median_range_m / (max_voxels_across * platform_voxel_m) - 1e-9), k_max);
+  if (!(k > 1.0)) return platform_voxel_m;
   // Rounded to a nanometre so that 3 x 0.1 m is the 0.3 m a platform file would write.
-  return std::round(platform_voxel_m * std::max(1.0, k) * 1e9) / 1e9;
+  return std::round(platform_voxel_m * k * 1e9) / 1e9;
 }
 
 }  // namespace unimap::pipeline

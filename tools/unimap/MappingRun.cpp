@@ -33,12 +33,14 @@ int RunMappingToFolder(const MappingRunOptions& options) {
   try {
     PrepareOutputFolder(options.out_dir, "--out");
     const Platform platform = LoadPlatform(options.platform_file);
-    // The map's voxel follows the scene's scale, read from the first 3D
-    // scan (docs/mapping.md, "The map's voxel follows the scene's scale").
+    // The map's voxel follows the scene's scale, read from the first 3D scan
+    // (docs/mapping.md, "Seventh round"); the platform's own options first,
+    // so that a bad `mapper:` section is reported before the data is opened.
+    const int scene_scans = pipeline::MapperOptionsFor(platform).localizer.scans_per_3d_scan;
     pipeline::SceneScale scene;
     {
       OpenedData probe = OpenData(options.data_dir, options.recording);
-      scene = pipeline::ReadSceneScale(*probe.reader, pipeline::MapperOptionsFor(platform).localizer.scans_per_3d_scan);
+      scene = pipeline::ReadSceneScale(*probe.reader, scene_scans);
     }
     pipeline::MapperOptions mapper_options = pipeline::MapperOptionsFor(platform, scene);
     mapper_options.localizer.gpf.threads = options.threads;

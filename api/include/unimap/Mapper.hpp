@@ -89,7 +89,11 @@ struct MapperStatus {
 // platform file, naming file, line and key) or PluginError; Add* throw
 // unimap::InputError for a non-finite time or a time going backwards within
 // its stream (the call is ignored); kLive reports a processing error on the
-// next call. Everything else is reported by the return values.
+// next call. The mapper is built once the first 3D scan's scans have arrived
+// (they size the map's voxel, docs/library.md): a `mapper:` value that is
+// invalid only at the voxel the scene chose throws ConfigError from the Add*
+// call (kLive: the next call) or Finish() that builds it. Everything else is
+// reported by the return values.
 class UNIMAP_MAPPER_API Mapper {
  public:
   // Loads the platform file and its payload plugin (searched as `unimap run`

@@ -248,5 +248,24 @@ TEST(MapperSettingsTest, SceneScaleCoarsensTheVoxelAsThePlatformFileWould) {
   EXPECT_EQ(Rows(coarse), Rows(MapperOptionsFor(LoadPlatformFromString(yaml, "platform.yaml"))));
 }
 
+// A `mapper:` value that holds at the platform's voxel but not at the
+// scene's coarser one is an error naming the key, the voxel and the scene.
+TEST(MapperSettingsTest, ASettingInvalidOnlyAtTheScenesVoxelNamesIt) {
+  const Platform platform = WithSettings("mapper:\n  map:\n    clamp_distance_m: 0.2\n");
+  EXPECT_NO_THROW(MapperOptionsFor(platform));                             // 0.2 m >= the 0.1 m voxel
+  EXPECT_NO_THROW(MapperOptionsFor(platform, SceneScale{3.0, 1000, 40}));  // 30 voxels: 0.1 m kept
+  try {
+    MapperOptionsFor(platform, SceneScale{9.18, 1000, 40});  // 0.3 m: the clamp is below one voxel
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "mapper.map.clamp_distance_m") << e.what();
+    EXPECT_EQ(e.line(), FirstExtraLine() + 2) << e.what();
+    EXPECT_NE(e.reason().find("0.3 m that the scene's scale chose"), std::string::npos) << e.what();
+    EXPECT_NE(e.reason().find("median range of 9.18 m spans more than 40 of the platform's 0.1 m voxels"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace unimap::pipeline
