@@ -21,9 +21,20 @@ std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& p
   }
   const double inv_voxel = 1.0 / voxel_m;
   VoxelKeySet seen;
-  seen.reserve(points.size());
+  // Sized for a few returns per voxel (it grows if there are fewer): a
+  // table for every point is mostly empty and slower to probe.
+  seen.reserve(points.size() / 4 + 16);
+  // A scan lists its returns in firing order: neighbours mostly share a
+  // voxel, and a key equal to the previous point's is not new (one set
+  // look-up saved; the same indices).
+  std::uint64_t previous = 0;
+  bool any = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (seen.insert(VoxelKey(points[i], inv_voxel)).second) kept.push_back(i);
+    const std::uint64_t key = VoxelKey(points[i], inv_voxel);
+    if (any && key == previous) continue;
+    any = true;
+    previous = key;
+    if (seen.insert(key).second) kept.push_back(i);
   }
   return kept;
 }

@@ -231,23 +231,23 @@ void Localizer::ProcessReadyScans(bool finishing) {
 
 void Localizer::ProcessScan(const io::ScanRecord& scan) {
   const double t_end = io::ScanEndTime(scan);
-  RawScan raw;
+  RawScan converted_line;
+  const RawScan* raw = std::get_if<RawScan>(&scan);  // a 3D scan is deskewed where it lies
   if (const auto* line = std::get_if<LineScan>(&scan)) {
     try {
       StageTimer timer(&stats_.times.deskew_s);
       LineScanConversion converted = LineScanToRawScan(*line);
       stats_.beams_dropped += converted.dropped;
-      raw = std::move(converted.scan);
+      converted_line = std::move(converted.scan);
+      raw = &converted_line;
     } catch (const InputError& e) {
       Skip(&stats_.scans_bad_input, "line scan at " + std::to_string(t_end) + " s: " + e.what());
       return;
     }
-    if (raw.points.empty()) {
+    if (raw->points.empty()) {
       Skip(&stats_.scans_bad_input, "line scan at " + std::to_string(t_end) + " s has no valid return");
       return;
     }
-  } else {
-    raw = std::get<RawScan>(scan);
   }
   // With the IMU the state runs with its samples: predict to the scan's end
   // (holding the last sample if it lags) for the deskew. With a motion prior
@@ -262,7 +262,7 @@ void Localizer::ProcessScan(const io::ScanRecord& scan) {
   BodyScan body;
   try {
     StageTimer timer(&stats_.times.deskew_s);
-    body = plugin_->Deskew(raw, encoder_, [this](double t) { return MotionAt(t); });
+    body = plugin_->Deskew(*raw, encoder_, [this](double t) { return MotionAt(t); });
   } catch (const InputError& e) {
     Skip(&stats_.scans_bad_input, "scan at " + std::to_string(t_end) + " s: " + e.what());
     return;
