@@ -26,13 +26,11 @@ std::vector<std::size_t> VoxelFirstIndices(const std::vector<Eigen::Vector3f>& p
   seen.reserve(points.size() / 4 + 16);
   // A scan lists its returns in firing order: neighbours mostly share a
   // voxel, and a key equal to the previous point's is not new (one set
-  // look-up saved; the same indices).
-  std::uint64_t previous = 0;
-  bool any = false;
+  // look-up saved; the same indices). Keys use 63 bits: none is ~0.
+  std::uint64_t previous = ~std::uint64_t{0};
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::uint64_t key = VoxelKey(points[i], inv_voxel);
-    if (any && key == previous) continue;
-    any = true;
+    if (key == previous) continue;
     previous = key;
     if (seen.insert(key).second) kept.push_back(i);
   }
